@@ -1,0 +1,15 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file o3d.h
+ * @brief The whole o3d C API. Anything not declared in these headers is not API.
+ */
+#ifndef O3D_O3D_H
+#define O3D_O3D_H
+
+#include "o3d/common.h"
+#include "o3d/pointcloud.h"
+#include "o3d/kdtree.h"
+#include "o3d/io.h"
+#include "o3d/registration.h"
+
+#endif /* O3D_O3D_H */

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file internal.h
+/// @brief Plumbing shared by every C API translation unit: the exception guard, the thread-local
+/// error, argument checks, versioned options structs, and the handle structs shared across modules.
+/// Nothing here is exported.
+#include <cstring>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "o3d/common.h"
+#include "o3d/geometry/point_cloud.h"
+#include "o3d/utility/error.h"
+
+struct o3d_pointcloud {
+    o3d::geometry::PointCloud cloud;
+};
+
+struct o3d_buffer {
+    std::vector<uint8_t> bytes;
+};
+
+namespace o3d::capi {
+
+/// @brief Record a failure for this thread and return `status`.
+o3d_status fail(o3d_status status, const std::string& message);
+/// @brief Forget the previous failure (called on entry of every guarded call).
+void reset_error();
+
+/// @brief Run `body` (returning o3d_status or void), translating every exception into a status
+/// with a message. No exception ever leaves the library.
+template <typename F>
+o3d_status guard(const char* function, F&& body) noexcept {
+    try {
+        reset_error();
+        if constexpr (std::is_void_v<decltype(body())>) {
+            body();
+            return O3D_OK;
+        } else {
+            return body();
+        }
+    } catch (const o3d::InvalidArgument& e) {
+        return fail(O3D_ERROR_INVALID_ARGUMENT, std::string(function) + ": " + e.what());
+    } catch (const o3d::IoError& e) {
+        return fail(O3D_ERROR_IO, std::string(function) + ": " + e.what());
+    } catch (const o3d::ParseError& e) {
+        return fail(O3D_ERROR_PARSE, std::string(function) + ": " + e.what());
+    } catch (const o3d::Unsupported& e) {
+        return fail(O3D_ERROR_UNSUPPORTED, std::string(function) + ": " + e.what());
+    } catch (const o3d::BufferTooSmall& e) {
+        return fail(O3D_ERROR_BUFFER_TOO_SMALL, std::string(function) + ": " + e.what());
+    } catch (const o3d::NotConverged& e) {
+        return fail(O3D_ERROR_NOT_CONVERGED, std::string(function) + ": " + e.what());
+    } catch (const o3d::Cancelled& e) {
+        return fail(O3D_ERROR_CANCELLED, std::string(function) + ": " + e.what());
+    } catch (const std::bad_alloc&) {
+        return fail(O3D_ERROR_OUT_OF_MEMORY, std::string(function) + ": out of memory");
+    } catch (const std::length_error& e) {
+        return fail(O3D_ERROR_OUT_OF_MEMORY, std::string(function) + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        return fail(O3D_ERROR_INVALID_ARGUMENT, std::string(function) + ": " + e.what());
+    } catch (const std::exception& e) {
+        return fail(O3D_ERROR_INTERNAL, std::string(function) + ": " + e.what());
+    } catch (...) {
+        return fail(O3D_ERROR_INTERNAL, std::string(function) + ": unknown error");
+    }
+}
+
+/// @brief Throw InvalidArgument("<name> is NULL") when `p` is NULL.
+template <typename T>
+T* require(T* p, const char* name) {
+    if (!p) throw o3d::InvalidArgument(std::string(name) + " is NULL");
+    return p;
+}
+
+/// @brief Read a versioned options struct: start from `defaults`, then take the first
+/// `user->struct_size` bytes the caller provided (older, shorter structs keep working).
+/// NULL `user` means defaults. A struct_size smaller than the size field or larger than
+/// the library knows is rejected.
+template <typename T>
+T read_options(const T* user, const T& defaults, const char* name) {
+    T out = defaults;
+    if (!user) return out;
+    const uint32_t size = user->struct_size;
+    if (size < sizeof(uint32_t) || size > sizeof(T))
+        throw o3d::InvalidArgument(std::string(name) + ".struct_size " + std::to_string(size) +
+                                   " is not a size this library knows (expected " + std::to_string(sizeof(T)) +
+                                   "); call the matching *_init()");
+    std::memcpy(&out, user, size);
+    out.struct_size = sizeof(T);
+    return out;
+}
+
+/// @brief Shared body of every `*_init(opts, struct_size)`: write the defaults' first struct_size bytes.
+template <typename T>
+void init_options(T* opts, uint32_t struct_size, const T& defaults, const char* name) {
+    require(opts, name);
+    if (struct_size < sizeof(uint32_t) || struct_size > sizeof(T))
+        throw o3d::InvalidArgument(std::string(name) + ": struct_size " + std::to_string(struct_size) +
+                                   " is not a size this library knows (expected " + std::to_string(sizeof(T)) + ")");
+    T filled = defaults;
+    filled.struct_size = struct_size;
+    std::memcpy(opts, &filled, struct_size);
+}
+
+/// @brief Copy-out convention: report `count` in `*out_n`; copy when `out` is non-NULL and
+/// `capacity` suffices, else BufferTooSmall (when `out` is non-NULL).
+template <typename T>
+void copy_out(const T* src, size_t count, T* out, size_t capacity, size_t* out_n, size_t elements_per_item = 1) {
+    if (out_n) *out_n = count;
+    if (!out) return;
+    if (capacity < count)
+        throw o3d::BufferTooSmall("buffer holds " + std::to_string(capacity) + " items but " + std::to_string(count) +
+                                  " are needed");
+    if (count) std::memcpy(out, src, count * elements_per_item * sizeof(T));
+}
+
+/// @brief Throw InvalidArgument unless `x` is finite.
+void require_finite(double x, const char* name);
+
+}  // namespace o3d::capi

@@ -1,45 +1,154 @@
 // SPDX-License-Identifier: MIT
-// C API: registration.h (stubs, to be replaced by the implementation).
+// C API: registration.h.
+#include <cmath>
+#include <memory>
+#include <string>
+
 #include "internal.h"
 #include "o3d/registration.h"
+#include "o3d/registration/evaluation.h"
+#include "o3d/registration/icp.h"
+#include "o3d/registration/information_matrix.h"
 
-// Unused-parameter warnings are expected in stubs.
-#pragma GCC diagnostic ignored "-Wunused-parameter"
+struct o3d_registration_result {
+    o3d::registration::RegistrationResult result;
+};
+
+namespace {
+
+namespace reg = o3d::registration;
+
+const o3d_icp_options_t kIcpDefaults = {
+    sizeof(o3d_icp_options_t), O3D_ESTIMATION_POINT_TO_POINT, 0, 1e-6, 1e-6, 30, 0, nullptr, nullptr,
+};
+
+/// Row-major 16 doubles -> 4x4; NULL means identity.
+Eigen::Matrix4d read_transform(const double* m, const char* name) {
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    if (!m) return t;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            if (!std::isfinite(m[4 * r + c]))
+                throw o3d::InvalidArgument(std::string(name) + "[" + std::to_string(4 * r + c) + "] is not finite");
+            t(r, c) = m[4 * r + c];
+        }
+    return t;
+}
+
+reg::IcpOptions to_core(const o3d_icp_options_t& o) {
+    reg::IcpOptions out;
+    if (o.estimation == O3D_ESTIMATION_POINT_TO_POINT)
+        out.estimation = reg::Estimation::PointToPoint;
+    else if (o.estimation == O3D_ESTIMATION_POINT_TO_PLANE)
+        out.estimation = reg::Estimation::PointToPlane;
+    else
+        throw o3d::InvalidArgument("opts.estimation " + std::to_string(o.estimation) + " is not an O3D_ESTIMATION_*");
+    out.with_scaling = o.with_scaling != 0;
+    out.criteria.relative_fitness = o.relative_fitness;
+    out.criteria.relative_rmse = o.relative_rmse;
+    out.criteria.max_iteration = o.max_iteration;
+    out.num_threads = o.num_threads;
+    if (o.progress) {
+        const o3d_progress_callback callback = o.progress;
+        void* const user_data = o.user_data;
+        out.progress = [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
+    }
+    return out;
+}
+
+o3d_registration_result_t* wrap(reg::RegistrationResult&& r) {
+    auto handle = std::make_unique<o3d_registration_result>();
+    handle->result = std::move(r);
+    return handle.release();
+}
+
+}  // namespace
 
 extern "C" {
 
 O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct_size) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return o3d::capi::guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kIcpDefaults, "opts"); });
 }
 
-O3D_API o3d_status o3d_register_icp(o3d_registration_result_t** out, const o3d_pointcloud_t* source, const o3d_pointcloud_t* target, double max_correspondence_distance, const double init[16], const o3d_icp_options_t* opts) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_register_icp(o3d_registration_result_t** out, const o3d_pointcloud_t* source,
+                                    const o3d_pointcloud_t* target, double max_correspondence_distance,
+                                    const double init[16], const o3d_icp_options_t* opts) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(out, "out");
+        *out = nullptr;
+        o3d::capi::require(source, "source");
+        o3d::capi::require(target, "target");
+        const Eigen::Matrix4d t0 = read_transform(init, "init");
+        const reg::IcpOptions options = to_core(o3d::capi::read_options(opts, kIcpDefaults, "opts"));
+        *out = wrap(reg::registration_icp(source->cloud, target->cloud, max_correspondence_distance, t0, options));
+    });
 }
 
-O3D_API o3d_status o3d_evaluate_registration(o3d_registration_result_t** out, const o3d_pointcloud_t* source, const o3d_pointcloud_t* target, double max_correspondence_distance, const double transformation[16]) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_evaluate_registration(o3d_registration_result_t** out, const o3d_pointcloud_t* source,
+                                             const o3d_pointcloud_t* target, double max_correspondence_distance,
+                                             const double transformation[16]) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(out, "out");
+        *out = nullptr;
+        o3d::capi::require(source, "source");
+        o3d::capi::require(target, "target");
+        const Eigen::Matrix4d t = read_transform(transformation, "transformation");
+        *out = wrap(reg::evaluate_registration(source->cloud, target->cloud, max_correspondence_distance, t));
+    });
 }
 
-O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointcloud_t* source, const o3d_pointcloud_t* target, double max_correspondence_distance, const double transformation[16], double out[36]) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointcloud_t* source,
+                                                                const o3d_pointcloud_t* target,
+                                                                double max_correspondence_distance,
+                                                                const double transformation[16], double out[36]) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(out, "out");
+        o3d::capi::require(source, "source");
+        o3d::capi::require(target, "target");
+        const Eigen::Matrix4d t = read_transform(transformation, "transformation");
+        const Eigen::Matrix<double, 6, 6> info =
+            reg::get_information_matrix_from_point_clouds(source->cloud, target->cloud, max_correspondence_distance, t);
+        for (int r = 0; r < 6; ++r)
+            for (int c = 0; c < 6; ++c) out[6 * r + c] = info(r, c);
+    });
 }
 
-O3D_API void o3d_registration_result_destroy(o3d_registration_result_t* result) {}
+O3D_API void o3d_registration_result_destroy(o3d_registration_result_t* result) { delete result; }
 
-O3D_API o3d_status o3d_registration_result_get_transformation(const o3d_registration_result_t* result, double out[16]) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_registration_result_get_transformation(const o3d_registration_result_t* result,
+                                                              double out[16]) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(result, "result");
+        o3d::capi::require(out, "out");
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) out[4 * r + c] = result->result.transformation(r, c);
+    });
 }
 
 O3D_API o3d_status o3d_registration_result_get_fitness(const o3d_registration_result_t* result, double* out) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(result, "result");
+        *o3d::capi::require(out, "out") = result->result.fitness;
+    });
 }
 
 O3D_API o3d_status o3d_registration_result_get_inlier_rmse(const o3d_registration_result_t* result, double* out) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(result, "result");
+        *o3d::capi::require(out, "out") = result->result.inlier_rmse;
+    });
 }
 
-O3D_API o3d_status o3d_registration_result_get_correspondence_set(const o3d_registration_result_t* result, int32_t* out, size_t capacity, size_t* out_n) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_registration_result_get_correspondence_set(const o3d_registration_result_t* result,
+                                                                  int32_t* out, size_t capacity, size_t* out_n) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(result, "result");
+        if (!out && !out_n) throw o3d::InvalidArgument("out and out_n are both NULL");
+        const auto& set = result->result.correspondence_set;
+        static_assert(sizeof(Eigen::Vector2i) == 2 * sizeof(int32_t), "pairs must be two packed int32");
+        const int32_t* data = set.empty() ? nullptr : set.front().data();
+        o3d::capi::copy_out(data, set.size(), out, capacity, out_n, 2);
+    });
 }
 
 }  // extern "C"

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+using System;
+
+namespace O3d
+{
+    /// <summary>
+    /// Flat batch search result copied into managed arrays: neighbours of query i are
+    /// Indices[Offsets[i] .. Offsets[i+1]-1], sorted by increasing distance, with squared distances.
+    /// </summary>
+    public sealed class NeighborResult
+    {
+        public long[] Offsets { get; private set; }
+        public int[] Indices { get; private set; }
+        public double[] Distances2 { get; private set; }
+        public int NumQueries { get { return Offsets.Length - 1; } }
+
+        internal NeighborResult(long[] offsets, int[] indices, double[] distances2)
+        {
+            Offsets = offsets; Indices = indices; Distances2 = distances2;
+        }
+
+        /// <summary>Neighbour indices of query <paramref name="query"/>.</summary>
+        public int[] IndicesOf(int query)
+        {
+            long b = Offsets[query], e = Offsets[query + 1];
+            var r = new int[e - b];
+            Array.Copy(Indices, b, r, 0, e - b);
+            return r;
+        }
+    }
+
+    /// <summary>
+    /// Native search result (o3d_search_result_t). Use <see cref="ToManaged"/> to copy it out, or
+    /// <see cref="GetView"/> for zero-copy access (addresses valid until Dispose).
+    /// </summary>
+    public sealed class SearchResult : NativeHandle
+    {
+        internal SearchResult(IntPtr handle) : base(handle) { }
+        internal override void Destroy(IntPtr handle) { O3dNative.o3d_search_result_destroy(handle); }
+
+        /// <summary>Number of queries and total number of neighbours.</summary>
+        public void GetCounts(out long numQueries, out long total)
+        {
+            ulong q, t;
+            O3dNative.o3d_search_result_counts(Handle, out q, out t);
+            GC.KeepAlive(this);
+            numQueries = (long)q; total = (long)t;
+        }
+
+        /// <summary>
+        /// Borrowed addresses: offsets (numQueries + 1 int64), indices (total int32), squared distances
+        /// (total double). Valid until this result is disposed; read with Marshal.Copy.
+        /// </summary>
+        public void GetView(out IntPtr offsets, out IntPtr indices, out IntPtr distances2)
+        {
+            O3dNative.o3d_search_result_view(Handle, out offsets, out indices, out distances2);
+            GC.KeepAlive(this);
+        }
+
+        public NeighborResult ToManaged()
+        {
+            long nq, total;
+            GetCounts(out nq, out total);
+            var offsets = new long[nq + 1];
+            var indices = new int[total];
+            var d2 = new double[total];
+            O3dNative.o3d_search_result_get_offsets(Handle, offsets, (ulong)offsets.Length);
+            O3dNative.o3d_search_result_get_indices(Handle, indices, (ulong)indices.Length);
+            O3dNative.o3d_search_result_get_distances2(Handle, d2, (ulong)d2.Length);
+            GC.KeepAlive(this);
+            return new NeighborResult(offsets, indices, d2);
+        }
+    }
+
+    /// <summary>KD-tree over 3-D points (o3d.geometry.KDTreeFlann). It copies the points it indexes.</summary>
+    public sealed class KDTreeFlann : NativeHandle
+    {
+        internal override void Destroy(IntPtr handle) { O3dNative.o3d_kdtree_destroy(handle); }
+
+        static IntPtr FromCloud(PointCloud pc)
+        {
+            if (pc == null) throw new ArgumentNullException("pc");
+            IntPtr h;
+            O3dNative.o3d_kdtree_create_from_pointcloud(out h, pc.Handle);
+            GC.KeepAlive(pc);
+            return h;
+        }
+
+        static IntPtr FromPoints(double[] xyz)
+        {
+            IntPtr h;
+            O3dNative.o3d_kdtree_create_from_points(out h, xyz, Checks.Rows3(xyz, "xyz"));
+            return h;
+        }
+
+        public KDTreeFlann(PointCloud pc) : base(FromCloud(pc)) { }
+        /// <summary>Tree over (N x 3) row-major points.</summary>
+        public KDTreeFlann(double[] xyz) : base(FromPoints(xyz)) { }
+
+        public long Size { get { ulong n; O3dNative.o3d_kdtree_size(Handle, out n); GC.KeepAlive(this); return (long)n; } }
+
+        /// <summary>Batch search of (M x 3) queries; the caller disposes the native result.</summary>
+        public SearchResult Search(double[] queries, SearchParam param, int numThreads = 0)
+        {
+            if (param == null) throw new ArgumentNullException("param");
+            ulong m = Checks.Rows3(queries, "queries");
+            IntPtr r;
+            using (var p = param.ToNative())
+                O3dNative.o3d_kdtree_search(Handle, queries, m, p, numThreads, out r);
+            GC.KeepAlive(this);
+            return new SearchResult(r);
+        }
+
+        /// <summary>As <see cref="Search(double[],SearchParam,int)"/> with float32 queries.</summary>
+        public SearchResult Search(float[] queries, SearchParam param, int numThreads = 0)
+        {
+            if (param == null) throw new ArgumentNullException("param");
+            ulong m = Checks.Rows3(queries, "queries");
+            IntPtr r;
+            using (var p = param.ToNative())
+                O3dNative.o3d_kdtree_search_f32(Handle, queries, m, p, numThreads, out r);
+            GC.KeepAlive(this);
+            return new SearchResult(r);
+        }
+
+        NeighborResult Managed(SearchResult r) { using (r) return r.ToManaged(); }
+
+        public NeighborResult SearchKnn(double[] queries, int knn, int numThreads = 0)
+        { return Managed(Search(queries, SearchParam.Knn(knn), numThreads)); }
+        public NeighborResult SearchKnn(float[] queries, int knn, int numThreads = 0)
+        { return Managed(Search(queries, SearchParam.Knn(knn), numThreads)); }
+        public NeighborResult SearchRadius(double[] queries, double radius, int numThreads = 0)
+        { return Managed(Search(queries, SearchParam.RadiusSearch(radius), numThreads)); }
+        public NeighborResult SearchHybrid(double[] queries, double radius, int maxNN, int numThreads = 0)
+        { return Managed(Search(queries, SearchParam.Hybrid(radius, maxNN), numThreads)); }
+    }
+}

@@ -1,0 +1,341 @@
+// SPDX-License-Identifier: MIT
+package org.o3d;
+
+import java.lang.ref.Reference;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+
+/**
+ * A point cloud (o3d.geometry.PointCloud): points, normals and colors as (N x 3) row-major double
+ * arrays. Getters copy out and setters copy in, one native call each. Close it (try-with-resources);
+ * a Cleaner destroys forgotten clouds.
+ */
+public final class PointCloud extends NativeResource {
+    PointCloud(long handle) {
+        super(handle, O3dNative::o3d_pointcloud_destroy);
+    }
+
+    private static long create() {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_create(h);
+        return h[0];
+    }
+
+    /** An empty cloud. */
+    public PointCloud() {
+        this(create());
+    }
+
+    /** A cloud with the given (N x 3) points. */
+    public PointCloud(double[] points) {
+        this(create());
+        try {
+            setPoints(points);
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
+    }
+
+    private static PointCloud wrap(long[] h) {
+        return new PointCloud(h[0]);
+    }
+
+    /** Deep copy. */
+    public PointCloud copy() {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_clone(h, handle());
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    /** Number of points. */
+    public long size() {
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_size(handle(), n);
+        Reference.reachabilityFence(this);
+        return n[0];
+    }
+
+    public boolean hasPoints() {
+        int[] v = new int[1];
+        O3dNative.o3d_pointcloud_has_points(handle(), v);
+        Reference.reachabilityFence(this);
+        return v[0] != 0;
+    }
+
+    public boolean hasNormals() {
+        int[] v = new int[1];
+        O3dNative.o3d_pointcloud_has_normals(handle(), v);
+        Reference.reachabilityFence(this);
+        return v[0] != 0;
+    }
+
+    public boolean hasColors() {
+        int[] v = new int[1];
+        O3dNative.o3d_pointcloud_has_colors(handle(), v);
+        Reference.reachabilityFence(this);
+        return v[0] != 0;
+    }
+
+    /** Remove points, normals and colors. */
+    public void clear() {
+        O3dNative.o3d_pointcloud_clear(handle());
+        Reference.reachabilityFence(this);
+    }
+
+    private interface Getter {
+        int get(long pc, double[] out, long capacity, long[] outN);
+    }
+
+    private double[] copyOut(Getter g) {
+        long h = handle();
+        long[] n = new long[1];
+        g.get(h, null, 0, n); // count query
+        if (n[0] * 3 > Integer.MAX_VALUE - 8) throw new IllegalStateException("cloud too large for a Java array");
+        double[] out = new double[(int) (n[0] * 3)];
+        g.get(h, out, n[0], n);
+        Reference.reachabilityFence(this);
+        return out;
+    }
+
+    /** Points as x0,y0,z0,x1,... (a copy). */
+    public double[] getPoints() { return copyOut(O3dNative::o3d_pointcloud_get_points); }
+    /** Normals (a copy; empty when none). */
+    public double[] getNormals() { return copyOut(O3dNative::o3d_pointcloud_get_normals); }
+    /** Colors, RGB in [0,1] (a copy; empty when none). */
+    public double[] getColors() { return copyOut(O3dNative::o3d_pointcloud_get_colors); }
+
+    /** Replace the points (length 3N, copied once). */
+    public void setPoints(double[] xyz) {
+        O3dNative.o3d_pointcloud_set_points(handle(), xyz, rows3(xyz.length, "xyz"));
+        Reference.reachabilityFence(this);
+    }
+
+    /** Replace the points from float32 (converted in the single copy). */
+    public void setPoints(float[] xyz) {
+        O3dNative.o3d_pointcloud_set_points_f32(handle(), xyz, rows3(xyz.length, "xyz"));
+        Reference.reachabilityFence(this);
+    }
+
+    public void setNormals(double[] xyz) {
+        O3dNative.o3d_pointcloud_set_normals(handle(), xyz, rows3(xyz.length, "xyz"));
+        Reference.reachabilityFence(this);
+    }
+
+    public void setNormals(float[] xyz) {
+        O3dNative.o3d_pointcloud_set_normals_f32(handle(), xyz, rows3(xyz.length, "xyz"));
+        Reference.reachabilityFence(this);
+    }
+
+    public void setColors(double[] rgb) {
+        O3dNative.o3d_pointcloud_set_colors(handle(), rgb, rows3(rgb.length, "rgb"));
+        Reference.reachabilityFence(this);
+    }
+
+    public void setColors(float[] rgb) {
+        O3dNative.o3d_pointcloud_set_colors_f32(handle(), rgb, rows3(rgb.length, "rgb"));
+        Reference.reachabilityFence(this);
+    }
+
+    // ---- borrowed views ------------------------------------------------------------------------
+    // A view is a direct ByteBuffer (native byte order) over the cloud's own storage: rows x 3
+    // doubles; use asDoubleBuffer(). It is valid ONLY until the next mutating call on this cloud or
+    // close(); using it afterwards reads freed memory. Read-only views are returned read-only.
+
+    private interface ViewFn {
+        int view(long pc, long[] data, long[] n);
+    }
+
+    private ByteBuffer view(ViewFn fn, boolean writable) {
+        long[] data = new long[1];
+        long[] n = new long[1];
+        fn.view(handle(), data, n);
+        Reference.reachabilityFence(this);
+        ByteBuffer b = O3dNative.o3dj_direct_buffer(data[0], n[0] * 3 * Double.BYTES);
+        if (b == null) b = ByteBuffer.allocateDirect(0);
+        b.order(ByteOrder.nativeOrder());
+        return writable ? b : b.asReadOnlyBuffer().order(ByteOrder.nativeOrder());
+    }
+
+    public ByteBuffer pointsView() { return view(O3dNative::o3d_pointcloud_points_view, false); }
+    public ByteBuffer normalsView() { return view(O3dNative::o3d_pointcloud_normals_view, false); }
+    public ByteBuffer colorsView() { return view(O3dNative::o3d_pointcloud_colors_view, false); }
+    public ByteBuffer pointsMutableView() { return view(O3dNative::o3d_pointcloud_points_mutable_view, true); }
+    public ByteBuffer normalsMutableView() { return view(O3dNative::o3d_pointcloud_normals_mutable_view, true); }
+    public ByteBuffer colorsMutableView() { return view(O3dNative::o3d_pointcloud_colors_mutable_view, true); }
+
+    // ---- geometry --------------------------------------------------------------------------------
+
+    /** Concatenate {@code other} onto this cloud (Open3D {@code pcd += other}). */
+    public PointCloud append(PointCloud other) {
+        O3dNative.o3d_pointcloud_append(handle(), other.handle());
+        Reference.reachabilityFence(other);
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    /** Apply a row-major 4x4 transform (16 values). */
+    public PointCloud transform(double[] transform) {
+        O3dNative.o3d_pointcloud_transform(handle(), fixed(transform, 16, "transform", false));
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    /** relative: add {@code t}; otherwise move the center to {@code t}. */
+    public PointCloud translate(double[] translation, boolean relative) {
+        O3dNative.o3d_pointcloud_translate(handle(), fixed(translation, 3, "translation", false), relative ? 1 : 0);
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    public PointCloud translate(double[] translation) { return translate(translation, true); }
+
+    /** Rotate by a row-major 3x3 matrix about {@code center} (null: the cloud's center). */
+    public PointCloud rotate(double[] rotation, double[] center) {
+        O3dNative.o3d_pointcloud_rotate(handle(), fixed(rotation, 9, "rotation", false), fixed(center, 3, "center", true));
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    public PointCloud scale(double scale, double[] center) {
+        O3dNative.o3d_pointcloud_scale(handle(), scale, fixed(center, 3, "center", true));
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    private interface Vec3Fn {
+        int get(long pc, double[] out);
+    }
+
+    private double[] vec3(Vec3Fn fn) {
+        double[] v = new double[3];
+        fn.get(handle(), v);
+        Reference.reachabilityFence(this);
+        return v;
+    }
+
+    public double[] getMinBound() { return vec3(O3dNative::o3d_pointcloud_get_min_bound); }
+    public double[] getMaxBound() { return vec3(O3dNative::o3d_pointcloud_get_max_bound); }
+    public double[] getCenter() { return vec3(O3dNative::o3d_pointcloud_get_center); }
+
+    /** Axis-aligned bounding box: {min, max}. */
+    public double[][] getAxisAlignedBoundingBox() {
+        double[] min = new double[3];
+        double[] max = new double[3];
+        O3dNative.o3d_pointcloud_get_axis_aligned_bounding_box(handle(), min, max);
+        Reference.reachabilityFence(this);
+        return new double[][] {min, max};
+    }
+
+    public PointCloud paintUniformColor(double[] rgb) {
+        O3dNative.o3d_pointcloud_paint_uniform_color(handle(), fixed(rgb, 3, "rgb", false));
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    /** New cloud with the points at {@code indices} (or all others when invert). */
+    public PointCloud selectByIndex(int[] indices, boolean invert) {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_select_by_index(h, handle(), indices, indices.length, invert ? 1 : 0);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    public PointCloud selectByIndex(int[] indices) { return selectByIndex(indices, false); }
+
+    public PointCloud removeNonFinitePoints(boolean removeNan, boolean removeInfinite) {
+        O3dNative.o3d_pointcloud_remove_non_finite_points(handle(), removeNan ? 1 : 0, removeInfinite ? 1 : 0);
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    public PointCloud normalizeNormals() {
+        O3dNative.o3d_pointcloud_normalize_normals(handle());
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    // ---- down-sampling -----------------------------------------------------------------------------
+
+    /** Average points (normals, colors) per voxel of edge {@code voxelSize} &gt; 0. */
+    public PointCloud voxelDownSample(double voxelSize) {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_voxel_down_sample(h, handle(), voxelSize);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    public PointCloud uniformDownSample(long everyKPoints) {
+        if (everyKPoints < 0) throw new IllegalArgumentException("everyKPoints < 0");
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_uniform_down_sample(h, handle(), everyKPoints);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    /** Keep round(ratio * N) random points; same seed, same output. The seed is an unsigned 64-bit value. */
+    public PointCloud randomDownSample(double samplingRatio, long seed) {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_random_down_sample(h, handle(), samplingRatio, seed);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    public PointCloud farthestPointDownSample(long numSamples, long startIndex) {
+        if (numSamples < 0 || startIndex < 0) throw new IllegalArgumentException("negative count");
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_farthest_point_down_sample(h, handle(), numSamples, startIndex);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    // ---- normals -----------------------------------------------------------------------------------
+
+    /** PCA normals over each point's neighbourhood (null param: KNN 30); numThreads 0 = default. */
+    public void estimateNormals(SearchParam param, int numThreads) {
+        o3d_search_param_t p = param != null ? param.toNative() : null;
+        try {
+            O3dNative.o3d_pointcloud_estimate_normals(handle(), p, numThreads);
+        } finally {
+            if (p != null) p.delete();
+        }
+        Reference.reachabilityFence(this);
+    }
+
+    public void estimateNormals(SearchParam param) { estimateNormals(param, 0); }
+    public void estimateNormals() { estimateNormals(null, 0); }
+
+    /** Flip normals towards {@code direction} (null: +Z). */
+    public void orientNormalsToAlignWithDirection(double[] direction) {
+        O3dNative.o3d_pointcloud_orient_normals_to_align_with_direction(handle(), fixed(direction, 3, "direction", true));
+        Reference.reachabilityFence(this);
+    }
+
+    /** Flip normals towards {@code cameraLocation} (null: origin). */
+    public void orientNormalsTowardsCameraLocation(double[] cameraLocation) {
+        O3dNative.o3d_pointcloud_orient_normals_towards_camera_location(handle(), fixed(cameraLocation, 3, "cameraLocation", true));
+        Reference.reachabilityFence(this);
+    }
+
+    /** Distance from each point to its nearest other point. */
+    public double[] computeNearestNeighborDistance(int numThreads) {
+        long n = size();
+        double[] out = new double[(int) n];
+        long[] outN = new long[1];
+        O3dNative.o3d_pointcloud_compute_nearest_neighbor_distance(handle(), out, n, outN, numThreads);
+        Reference.reachabilityFence(this);
+        return out;
+    }
+
+    /** For each point of this cloud, the distance to the closest point of {@code target}. */
+    public double[] computePointCloudDistance(PointCloud target, int numThreads) {
+        long n = size();
+        double[] out = new double[(int) n];
+        long[] outN = new long[1];
+        O3dNative.o3d_pointcloud_compute_point_cloud_distance(handle(), target.handle(), out, n, outN, numThreads);
+        Reference.reachabilityFence(target);
+        Reference.reachabilityFence(this);
+        return out;
+    }
+}

@@ -1,0 +1,1 @@
+"""o3d.camera: placeholder (camera intrinsics/trajectories are not implemented yet)."""

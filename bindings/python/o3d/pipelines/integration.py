@@ -1,0 +1,1 @@
+"""o3d.pipelines.integration: placeholder (TSDF integration is not implemented yet)."""

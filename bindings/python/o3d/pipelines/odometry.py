@@ -1,0 +1,1 @@
+"""o3d.pipelines.odometry: placeholder (RGB-D odometry is not implemented yet)."""

@@ -1,0 +1,1 @@
+"""o3d.visualization: placeholder (no viewer yet)."""

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// The extension module o3d._o3d. Registered in two passes, as Open3D's open3d_pybind.cpp: first
+// every class is declared (so signatures can name each other), then methods are defined. The
+// pure-Python package (bindings/python/o3d) sorts the names into Open3D's submodules.
+#include "common.h"
+
+PYBIND11_MODULE(_o3d, m) {
+    m.doc() = "o3d native extension (pybind11 over the o3d C API). Import o3d, not this module.";
+    namespace o = o3dpy;
+    o::declare_errors(m);
+    o::declare_arrays(m);
+    o::declare_utility(m);
+    o::declare_pointcloud(m);
+    o::declare_kdtree(m);
+    o::declare_io(m);
+    o::declare_registration(m);
+
+    o::define_utility(m);
+    o::define_pointcloud(m);
+    o::define_kdtree(m);
+    o::define_io(m);
+    o::define_registration(m);
+}

@@ -1,0 +1,460 @@
+// SPDX-License-Identifier: MIT
+// o3d.geometry.PointCloud over o3d_pointcloud_t (pointcloud.h).
+#include <limits>
+#include <random>
+
+#include "common.h"
+
+namespace o3dpy {
+
+PyPointCloud::PyPointCloud() {
+    o3d_pointcloud_t* pc = nullptr;
+    check(o3d_pointcloud_create(&pc));
+    h = adopt(pc);
+}
+
+CloudPtr PyPointCloud::for_resize() {
+    if (h.use_count() > 1) {
+        // numpy views (or another thread's call) share this handle: give this cloud a private copy
+        // so the old arrays stay valid for them.
+        o3d_pointcloud_t* copy = nullptr;
+        CloudPtr old = h;
+        with_const(old, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(&copy, pc); });
+        h = adopt(copy);
+    }
+    return h;
+}
+
+size_t PyPointCloud::size() const {
+    size_t n = 0;
+    with_const(h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_size(pc, &n); });
+    return n;
+}
+
+namespace {
+
+enum class Attr { Points, Normals, Colors };
+
+template <typename F>
+PyPointCloud derive(const CloudPtr& h, F&& f) {
+    o3d_pointcloud_t* out = nullptr;
+    with_const(h, [&](const o3d_pointcloud_t* pc) { return f(&out, pc); });
+    return PyPointCloud(adopt(out));
+}
+
+PyPointCloud& cloud(py::handle self) { return self.cast<PyPointCloud&>(); }
+
+py::array get_attr(PyPointCloud& self, Attr a) {
+    CloudPtr h = self.h;
+    double* data = nullptr;
+    size_t n = 0;
+    with_mut(h, [&](o3d_pointcloud_t* pc) {
+        return a == Attr::Points    ? o3d_pointcloud_points_mutable_view(pc, &data, &n)
+               : a == Attr::Normals ? o3d_pointcloud_normals_mutable_view(pc, &data, &n)
+                                    : o3d_pointcloud_colors_mutable_view(pc, &data, &n);
+    });
+    return view_array(data, n, 3, keepalive(h), true);
+}
+
+void set_attr(PyPointCloud& self, Attr a, py::handle value) {
+    const char* what = a == Attr::Points ? "points" : a == Attr::Normals ? "normals" : "colors";
+    Rows3 r = as_rows3(value, what);
+    CloudPtr h = self.for_resize();
+    with_mut(h, [&](o3d_pointcloud_t* pc) {
+        if (r.f32) {
+            auto p = static_cast<const float*>(r.data());
+            return a == Attr::Points    ? o3d_pointcloud_set_points_f32(pc, p, r.n)
+                   : a == Attr::Normals ? o3d_pointcloud_set_normals_f32(pc, p, r.n)
+                                        : o3d_pointcloud_set_colors_f32(pc, p, r.n);
+        }
+        auto p = static_cast<const double*>(r.data());
+        return a == Attr::Points    ? o3d_pointcloud_set_points(pc, p, r.n)
+               : a == Attr::Normals ? o3d_pointcloud_set_normals(pc, p, r.n)
+                                    : o3d_pointcloud_set_colors(pc, p, r.n);
+    });
+}
+
+py::array vec3_array(const std::array<double, 3>& v) {
+    py::array_t<double> out(3);
+    std::memcpy(out.mutable_data(), v.data(), sizeof(v));
+    return std::move(out);
+}
+
+bool flag(const PyPointCloud& self, o3d_status (*fn)(const o3d_pointcloud_t*, int32_t*)) {
+    int32_t v = 0;
+    with_const(self.h, [&](const o3d_pointcloud_t* pc) { return fn(pc, &v); });
+    return v != 0;
+}
+
+std::vector<int32_t> as_indices(py::handle obj) {
+    py::array a = py::array::ensure(obj);
+    if (!a) invalid("indices: expected a sequence of integers");
+    if (a.size() == 0) return {};
+    char kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u') invalid("indices: expected integers, got dtype " + std::string(py::str(a.dtype())));
+    if (a.ndim() != 1) invalid("indices: expected a 1-D sequence");
+    auto v = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!v) throw py::error_already_set();
+    std::vector<int32_t> out((size_t)v.size());
+    const int64_t* p = v.data();
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (p[i] < 0 || p[i] > std::numeric_limits<int32_t>::max())
+            invalid("indices: index " + std::to_string(p[i]) + " is out of range");
+        out[i] = (int32_t)p[i];
+    }
+    return out;
+}
+
+template <typename F>
+py::array distances(const CloudPtr& h, F&& f) {
+    std::vector<double> out;
+    with_const(h, [&](const o3d_pointcloud_t* pc) {
+        size_t n = 0;
+        o3d_status s = o3d_pointcloud_size(pc, &n);
+        if (s != O3D_OK) return s;
+        out.resize(n);
+        size_t got = 0;
+        s = f(pc, out.data(), out.size(), &got);
+        out.resize(std::min(got, out.size()));
+        return s;
+    });
+    py::array_t<double> arr((py::ssize_t)out.size());
+    if (!out.empty()) std::memcpy(arr.mutable_data(), out.data(), out.size() * sizeof(double));
+    return std::move(arr);
+}
+
+}  // namespace
+
+void declare_pointcloud(py::module_& m) {
+    py::class_<PyPointCloud>(m, "PointCloud",
+                             "A point cloud: points, optional normals and colors ((N, 3) float64, colors in [0, 1]).\n\n"
+                             "``np.asarray(pcd.points)`` is a writable zero-copy view of the cloud's memory. Calls "
+                             "that resize an array (setting points, clear, +=, remove_non_finite_points, "
+                             "estimate_normals, paint_uniform_color) first give the cloud a private copy when such "
+                             "views are alive, so an old view never dangles (it keeps the old data).");
+}
+
+void define_pointcloud(py::module_& m) {
+    auto cls = static_cast<py::class_<PyPointCloud>>(m.attr("PointCloud"));
+    cls.def(py::init<>(), "An empty cloud.")
+        .def(py::init([](const PyPointCloud& other) {
+                 return derive(other.h, [](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                     return o3d_pointcloud_clone(out, pc);
+                 });
+             }),
+             py::arg("cloud"), "Deep copy of another cloud.")
+        .def(py::init([](py::handle points) {
+                 PyPointCloud pc;
+                 set_attr(pc, Attr::Points, points);
+                 return pc;
+             }),
+             py::arg("points"), "A cloud with these (N, 3) points (float64 or float32).")
+        .def("__copy__", [](const PyPointCloud& self) {
+            return derive(self.h, [](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(out, pc); });
+        })
+        .def("__deepcopy__", [](const PyPointCloud& self, py::handle) {
+            return derive(self.h, [](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(out, pc); });
+        })
+        .def_property(
+            "points", [](PyPointCloud& self) { return get_attr(self, Attr::Points); },
+            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Points, v); },
+            "(N, 3) float64 writable view; assign any (N, 3) float64/float32 array or Vector3dVector.")
+        .def_property(
+            "normals", [](PyPointCloud& self) { return get_attr(self, Attr::Normals); },
+            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Normals, v); }, "(N, 3) normals (view).")
+        .def_property(
+            "colors", [](PyPointCloud& self) { return get_attr(self, Attr::Colors); },
+            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Colors, v); }, "(N, 3) RGB colors in [0, 1] (view).")
+        .def("has_points", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_points); })
+        .def("has_normals", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_normals); })
+        .def("has_colors", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_colors); })
+        .def("is_empty", [](const PyPointCloud& self) { return !flag(self, &o3d_pointcloud_has_points); })
+        .def("__len__", &PyPointCloud::size)
+        .def("__repr__", [](const PyPointCloud& self) {
+            return "PointCloud with " + std::to_string(self.size()) + " points.";
+        })
+        .def(
+            "clear",
+            [](py::object self) {
+                with_mut(cloud(self).for_resize(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_clear(pc); });
+                return self;
+            },
+            "Remove every point, normal and color. Returns self.")
+        .def(
+            "__iadd__",
+            [](py::object self, const PyPointCloud& other) {
+                CloudPtr src = other.h;
+                PyPointCloud& me = cloud(self);
+                if (src == me.h) {  // pcd += pcd: append a snapshot of itself
+                    o3d_pointcloud_t* copy = nullptr;
+                    with_const(src, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(&copy, pc); });
+                    src = adopt(copy);
+                }
+                CloudPtr dst = me.for_resize();
+                o3d_status s;
+                {
+                    py::gil_scoped_release release;
+                    std::unique_lock<std::shared_mutex> l1(dst->mutex, std::defer_lock);
+                    std::shared_lock<std::shared_mutex> l2(src->mutex, std::defer_lock);
+                    std::lock(l1, l2);
+                    s = o3d_pointcloud_append(dst->pc, src->pc);
+                }
+                check(s);
+                return self;
+            },
+            py::arg("cloud"))
+        .def(
+            "__add__",
+            [](const PyPointCloud& self, const PyPointCloud& other) {
+                PyPointCloud out = derive(self.h, [](o3d_pointcloud_t** o, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_clone(o, pc);
+                });
+                CloudPtr src = other.h;
+                o3d_status s;
+                {
+                    py::gil_scoped_release release;
+                    std::shared_lock<std::shared_mutex> l2(src->mutex);
+                    s = o3d_pointcloud_append(out.h->pc, src->pc);
+                }
+                check(s);
+                return out;
+            },
+            py::arg("cloud"))
+        .def(
+            "transform",
+            [](py::object self, py::handle T) {
+                auto t = as_mat4(T, "transformation");
+                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_transform(pc, t.data()); });
+                return self;
+            },
+            py::arg("transformation"), "Apply a 4x4 homogeneous transform (points and normals). Returns self.")
+        .def(
+            "translate",
+            [](py::object self, py::handle t, bool relative) {
+                auto v = as_vec3(t, "translation");
+                with_mut(cloud(self).for_inplace(),
+                         [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_translate(pc, v.data(), relative ? 1 : 0); });
+                return self;
+            },
+            py::arg("translation"), py::arg("relative") = true,
+            "relative=True: add translation; False: move the center to it. Returns self.")
+        .def(
+            "rotate",
+            [](py::object self, py::handle R, py::handle center) {
+                auto r = as_mat3(R, "R");
+                std::array<double, 3> c{};
+                bool has_center = !center.is_none();
+                if (has_center) c = as_vec3(center, "center");
+                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_rotate(pc, r.data(), has_center ? c.data() : nullptr);
+                });
+                return self;
+            },
+            py::arg("R"), py::arg("center") = py::none(),
+            "Rotate by the 3x3 matrix R about center (None: the cloud's center). Returns self.")
+        .def(
+            "scale",
+            [](py::object self, double scale, py::handle center) {
+                std::array<double, 3> c{};
+                bool has_center = !center.is_none();
+                if (has_center) c = as_vec3(center, "center");
+                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_scale(pc, scale, has_center ? c.data() : nullptr);
+                });
+                return self;
+            },
+            py::arg("scale"), py::arg("center") = py::none(), "Scale about center (None: the cloud's center). Returns self.")
+        .def("get_min_bound",
+             [](const PyPointCloud& self) {
+                 std::array<double, 3> v{};
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_min_bound(pc, v.data()); });
+                 return vec3_array(v);
+             })
+        .def("get_max_bound",
+             [](const PyPointCloud& self) {
+                 std::array<double, 3> v{};
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_max_bound(pc, v.data()); });
+                 return vec3_array(v);
+             })
+        .def("get_center",
+             [](const PyPointCloud& self) {
+                 std::array<double, 3> v{};
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_center(pc, v.data()); });
+                 return vec3_array(v);
+             })
+        .def(
+            "get_axis_aligned_bounding_box",
+            [](const PyPointCloud& self) {
+                std::array<double, 3> lo{}, hi{};
+                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_get_axis_aligned_bounding_box(pc, lo.data(), hi.data());
+                });
+                py::object cls = py::module_::import("o3d.geometry").attr("AxisAlignedBoundingBox");
+                return cls(vec3_array(lo), vec3_array(hi));
+            },
+            "The axis-aligned bounding box (o3d.geometry.AxisAlignedBoundingBox).")
+        .def(
+            "paint_uniform_color",
+            [](py::object self, py::handle color) {
+                auto c = as_vec3(color, "color");
+                with_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_paint_uniform_color(pc, c.data()); });
+                return self;
+            },
+            py::arg("color"), "Set every color to the RGB color (each in [0, 1]). Returns self.")
+        .def(
+            "select_by_index",
+            [](const PyPointCloud& self, py::handle indices, bool invert) {
+                std::vector<int32_t> idx = as_indices(indices);
+                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_select_by_index(out, pc, idx.data(), idx.size(), invert ? 1 : 0);
+                });
+            },
+            py::arg("indices"), py::arg("invert") = false,
+            "New cloud with the points at indices (invert=True: all the others). Out-of-range indices raise ValueError.")
+        .def(
+            "remove_non_finite_points",
+            [](py::object self, bool remove_nan, bool remove_infinite) {
+                with_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_remove_non_finite_points(pc, remove_nan ? 1 : 0, remove_infinite ? 1 : 0);
+                });
+                return self;
+            },
+            py::arg("remove_nan") = true, py::arg("remove_infinite") = true,
+            "Drop points with a NaN / infinite coordinate. Returns self.")
+        .def(
+            "normalize_normals",
+            [](py::object self) {
+                with_mut(cloud(self).for_inplace(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_normalize_normals(pc); });
+                return self;
+            },
+            "Scale every normal to unit length. Returns self.")
+        .def(
+            "voxel_down_sample",
+            [](const PyPointCloud& self, double voxel_size) {
+                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_voxel_down_sample(out, pc, voxel_size);
+                });
+            },
+            py::arg("voxel_size"), "Average the points (normals, colors) in each voxel of edge voxel_size > 0.")
+        .def(
+            "uniform_down_sample",
+            [](const PyPointCloud& self, int64_t every_k_points) {
+                if (every_k_points < 1) invalid("uniform_down_sample: every_k_points must be >= 1");
+                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_uniform_down_sample(out, pc, (size_t)every_k_points);
+                });
+            },
+            py::arg("every_k_points"), "Keep points 0, k, 2k, ...")
+        .def(
+            "random_down_sample",
+            [](const PyPointCloud& self, double sampling_ratio, py::object seed) {
+                uint64_t s;
+                if (seed.is_none()) {
+                    std::random_device rd;  // Open3D: a fresh random draw unless seeded
+                    s = ((uint64_t)rd() << 32) ^ rd();
+                } else {
+                    py::int_ i = seed;
+                    s = (uint64_t)PyLong_AsUnsignedLongLongMask(i.ptr());
+                }
+                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_random_down_sample(out, pc, sampling_ratio, s);
+                });
+            },
+            py::arg("sampling_ratio"), py::arg("seed") = py::none(),
+            "Keep round(sampling_ratio * N) random points in their original order. seed=None draws a new "
+            "seed each call (as Open3D); an integer seed gives the same output every time.")
+        .def(
+            "farthest_point_down_sample",
+            [](const PyPointCloud& self, int64_t num_samples, int64_t start_index) {
+                if (num_samples < 0) invalid("farthest_point_down_sample: num_samples must be >= 0");
+                if (start_index < 0) invalid("farthest_point_down_sample: start_index must be >= 0");
+                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_farthest_point_down_sample(out, pc, (size_t)num_samples, (size_t)start_index);
+                });
+            },
+            py::arg("num_samples"), py::arg("start_index") = 0, "Farthest-point sampling.")
+        .def(
+            "estimate_normals",
+            [](py::object self, py::handle search_param, bool /*fast_normal_computation*/, int32_t num_threads) {
+                o3d_search_param_t p = to_search_param(search_param);
+                with_mut(cloud(self).for_resize(),
+                         [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_estimate_normals(pc, &p, num_threads); });
+            },
+            py::arg("search_param") = py::none(), py::arg("fast_normal_computation") = true, py::arg("num_threads") = 0,
+            "PCA normals over each point's neighbourhood (default KDTreeSearchParamKNN(30)). Existing normals "
+            "orient the new ones. fast_normal_computation is accepted for Open3D compatibility.")
+        .def(
+            "orient_normals_to_align_with_direction",
+            [](py::object self, py::handle direction) {
+                auto d = as_vec3(direction, "orientation_reference");
+                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_orient_normals_to_align_with_direction(pc, d.data());
+                });
+            },
+            py::arg("orientation_reference") = py::make_tuple(0.0, 0.0, 1.0))
+        .def(
+            "orient_normals_towards_camera_location",
+            [](py::object self, py::handle location) {
+                auto c = as_vec3(location, "camera_location");
+                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                    return o3d_pointcloud_orient_normals_towards_camera_location(pc, c.data());
+                });
+            },
+            py::arg("camera_location") = py::make_tuple(0.0, 0.0, 0.0))
+        .def(
+            "compute_nearest_neighbor_distance",
+            [](const PyPointCloud& self, int32_t num_threads) {
+                return distances(self.h, [&](const o3d_pointcloud_t* pc, double* out, size_t cap, size_t* n) {
+                    return o3d_pointcloud_compute_nearest_neighbor_distance(pc, out, cap, n, num_threads);
+                });
+            },
+            py::arg("num_threads") = 0, "Distance from each point to its nearest other point, (N,) float64.")
+        .def(
+            "compute_point_cloud_distance",
+            [](const PyPointCloud& self, const PyPointCloud& target, int32_t num_threads) {
+                CloudPtr t = target.h;
+                return distances(self.h, [&](const o3d_pointcloud_t* pc, double* out, size_t cap, size_t* n) {
+                    std::shared_lock<std::shared_mutex> lock(t->mutex, std::defer_lock);
+                    if (t != self.h) lock.lock();
+                    return o3d_pointcloud_compute_point_cloud_distance(pc, t->pc, out, cap, n, num_threads);
+                });
+            },
+            py::arg("target"), py::arg("num_threads") = 0,
+            "For each point, the distance to the closest point of target, (N,) float64.")
+        .def(
+            "_points_copy",
+            [](const PyPointCloud& self, int which) {
+                // Copy-out path (o3d_pointcloud_get_*): a snapshot independent of the cloud.
+                std::vector<double> buf;
+                size_t n = 0;
+                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                    auto get = which == 0 ? &o3d_pointcloud_get_points
+                               : which == 1 ? &o3d_pointcloud_get_normals
+                                            : &o3d_pointcloud_get_colors;
+                    o3d_status s = get(pc, nullptr, 0, &n);
+                    if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
+                    buf.resize(n * 3);
+                    return get(pc, buf.data(), n, &n);
+                });
+                py::array_t<double> out(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
+                if (n) std::memcpy(out.mutable_data(), buf.data(), n * 3 * sizeof(double));
+                return out;
+            },
+            py::arg("which") = 0, "Copy of points (0), normals (1) or colors (2), not a view.")
+        .def(
+            "_readonly_view",
+            [](const PyPointCloud& self, int which) {
+                CloudPtr h = self.h;
+                const double* data = nullptr;
+                size_t n = 0;
+                with_const(h, [&](const o3d_pointcloud_t* pc) {
+                    return which == 0   ? o3d_pointcloud_points_view(pc, &data, &n)
+                           : which == 1 ? o3d_pointcloud_normals_view(pc, &data, &n)
+                                        : o3d_pointcloud_colors_view(pc, &data, &n);
+                });
+                return view_array(data, n, 3, keepalive(h), false);
+            },
+            py::arg("which") = 0, "Read-only zero-copy view of points (0), normals (1) or colors (2).");
+}
+
+}  // namespace o3dpy

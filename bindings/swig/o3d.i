@@ -1,0 +1,120 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * o3d.i — the ONE SWIG interface shared by the C# and Java bindings.
+ *
+ * It wraps only the public C headers (capi/include/o3d/*.h) as flat functions in a raw,
+ * non-public module class `O3dNative` (internal in C#, package-private in Java). The idiomatic
+ * classes (bindings/csharp/src/*.cs, bindings/java/src/main/java/org/o3d/*.java) are written by
+ * hand on top of it and are the only public surface.
+ *
+ * Conventions of the raw layer (the same in both languages):
+ *   - opaque handles (o3d_pointcloud_t*, ...) and borrowed pointers are raw addresses
+ *     (C# IntPtr, Java long); `T** out` handle/view outputs are `out IntPtr` / `long[1]`;
+ *   - arrays are one managed array per call (double[]/float[]/int[]/long[]/byte[]), pinned or
+ *     copied once; fixed-size arrays (`double out[16]`) likewise;
+ *   - scalar outputs are `out T` in C# and `T[1]` in Java;
+ *   - ERRORS: every function returning o3d_status goes through the single `ret` typemap below,
+ *     which turns a non-OK status plus o3d_last_error_message() into the language's
+ *     O3dException (carrying the status). It runs after argout/freearg, so pinned arrays are
+ *     always released first. It is on by default; there is no way to turn it off.
+ *
+ * Language-specific typemaps live in bindings/csharp/o3d_csharp.i and bindings/java/o3d_java.i;
+ * each defines the abstract typemap names used here (O3D_IN, O3D_OUT, O3D_SOUT, O3D_PTR,
+ * O3D_PTROUT) and the macro O3D_SWIG_RAISE(status, message).
+ */
+%module O3dNative
+
+%{
+#include <stdint.h>
+#include "o3d/o3d.h"
+%}
+
+%include <stdint.i>
+
+#if defined(SWIGCSHARP)
+%include "../csharp/o3d_csharp.i"
+#elif defined(SWIGJAVA)
+%include "../java/o3d_java.i"
+#else
+#error "o3d.i: only C# and Java are supported"
+#endif
+
+/* ---- the single error mechanism ------------------------------------------------------------ */
+%typemap(out, canthrow=1) o3d_status %{ $result = $1; %}
+%typemap(ret) o3d_status %{
+  if ($1 != O3D_OK) {
+    O3D_SWIG_RAISE($1, o3d_last_error_message());
+  }
+%}
+/* o3d_last_error_code() returns a status as data, it must not raise. */
+%typemap(ret) o3d_status o3d_last_error_code ""
+
+/* ---- sizes of the option structs (their *_init functions need the caller's sizeof) --------- */
+%inline %{
+static uint32_t o3dx_sizeof_search_param(void) { return (uint32_t)sizeof(o3d_search_param_t); }
+static uint32_t o3dx_sizeof_read_options(void) { return (uint32_t)sizeof(o3d_read_options_t); }
+static uint32_t o3dx_sizeof_write_options(void) { return (uint32_t)sizeof(o3d_write_options_t); }
+static uint32_t o3dx_sizeof_icp_options(void) { return (uint32_t)sizeof(o3d_icp_options_t); }
+%}
+
+/* ---- opaque handles and raw pointers ------------------------------------------------------- */
+%apply SWIGTYPE *O3D_PTR {
+  o3d_pointcloud_t *, const o3d_pointcloud_t *,
+  o3d_kdtree_t *, const o3d_kdtree_t *,
+  o3d_search_result_t *, const o3d_search_result_t *,
+  o3d_registration_result_t *, const o3d_registration_result_t *,
+  o3d_buffer_t *, const o3d_buffer_t *,
+  void *, o3d_log_callback, o3d_progress_callback
+}
+%apply SWIGTYPE **O3D_PTROUT {
+  o3d_pointcloud_t **, o3d_kdtree_t **, o3d_search_result_t **, o3d_registration_result_t **,
+  o3d_buffer_t **,
+  const uint8_t **out_data, const double **out_data, double **out_data,
+  const int64_t **out_offsets, const int32_t **out_indices, const double **out_distances2
+}
+
+/* ---- common.h ------------------------------------------------------------------------------ */
+%apply uint8_t *O3D_OUT { uint8_t *out }
+%apply size_t *O3D_SOUT { size_t *out_size }
+%include "o3d/common.h"
+%clear uint8_t *out;
+
+/* ---- pointcloud.h -------------------------------------------------------------------------- */
+%apply const double *O3D_IN {
+  const double *xyz, const double *rgb,
+  const double transform[ANY], const double translation[ANY], const double rotation[ANY],
+  const double center[ANY], const double direction[ANY], const double camera_location[ANY]
+}
+%apply const double *O3D_IN { const double rgb[ANY] }
+%apply const float *O3D_IN { const float *xyz, const float *rgb }
+%apply const int32_t *O3D_IN { const int32_t *indices }
+%apply double *O3D_OUT { double *out, double out[ANY], double out_min[ANY], double out_max[ANY] }
+%apply int32_t *O3D_SOUT { int32_t *out }
+%apply size_t *O3D_SOUT { size_t *out_n }
+%include "o3d/pointcloud.h"
+%clear double *out;
+%clear int32_t *out;
+
+/* ---- kdtree.h ------------------------------------------------------------------------------ */
+%apply const double *O3D_IN { const double *queries }
+%apply const float *O3D_IN { const float *queries }
+%apply int64_t *O3D_OUT { int64_t *out }
+%apply int32_t *O3D_OUT { int32_t *out }
+%apply double *O3D_OUT { double *out }
+%apply size_t *O3D_SOUT { size_t *out_num_queries, size_t *out_total }
+%include "o3d/kdtree.h"
+%clear int64_t *out;
+%clear int32_t *out;
+%clear double *out;
+
+/* ---- io.h ---------------------------------------------------------------------------------- */
+%apply const uint8_t *O3D_IN { const uint8_t *data }
+%include "o3d/io.h"
+
+/* ---- registration.h ------------------------------------------------------------------------ */
+%apply const double *O3D_IN { const double init[ANY], const double transformation[ANY] }
+%apply double *O3D_SOUT { double *out }
+%apply int32_t *O3D_OUT { int32_t *out }
+%include "o3d/registration.h"
+%clear double *out;
+%clear int32_t *out;

@@ -5,6 +5,7 @@
 /// minimise sum(((R s + t - q) . n_q)^2) with R ~ I + [w]x, solve the 6x6 normal equations, and
 /// rebuild R = Rz(w_z) Ry(w_y) Rx(w_x).
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross product
 #include <cstdint>
 
 #include "o3d/geometry/point_cloud.h"

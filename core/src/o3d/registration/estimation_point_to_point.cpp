@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "o3d/registration/estimation_point_to_point.h"
 
+#include <Eigen/LU>  // determinant
 #include <Eigen/SVD>
 #include <cmath>
 #include <string>

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file pointcloud.hpp
+/// @brief o3dpp::PointCloud (move-only owner of an o3d_pointcloud_t) and SearchParam.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "o3d/pointcloud.h"
+#include "o3dpp/common.hpp"
+#include "o3dpp/error.hpp"
+#include "o3dpp/handle.hpp"
+#include "o3dpp/span.hpp"
+
+namespace o3dpp {
+
+/// @brief Neighbourhood search parameter (KDTreeSearchParamKNN / Radius / Hybrid).
+struct SearchParam {
+    enum class Kind : int32_t { Knn = O3D_SEARCH_KNN, Radius = O3D_SEARCH_RADIUS, Hybrid = O3D_SEARCH_HYBRID };
+    Kind kind = Kind::Knn;
+    int knn = 30;
+    double radius = 0.0;
+
+    static SearchParam Knn(int k) { return {Kind::Knn, k, 0.0}; }
+    static SearchParam Radius(double r) { return {Kind::Radius, 30, r}; }
+    static SearchParam Hybrid(double r, int k) { return {Kind::Hybrid, k, r}; }
+
+    /// @brief The C struct (defaults from o3d_search_param_init, then these fields).
+    o3d_search_param_t to_c() const {
+        o3d_search_param_t c;
+        check(o3d_search_param_init(&c, sizeof c));
+        c.kind = static_cast<int32_t>(kind);
+        c.knn = knn;
+        c.radius = radius;
+        return c;
+    }
+};
+
+/// @brief A point cloud: N points, optional N normals and N colors (RGB in [0,1]). Move-only.
+class PointCloud {
+public:
+    /// @brief New empty cloud.
+    PointCloud() {
+        o3d_pointcloud_t* p = nullptr;
+        check(o3d_pointcloud_create(&p));
+        h_.reset(p);
+    }
+    /// @brief Take ownership of `owned` (must not be NULL).
+    explicit PointCloud(o3d_pointcloud_t* owned) : h_(owned) {
+        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::PointCloud: NULL handle");
+    }
+    /// @brief Cloud holding `points`.
+    explicit PointCloud(const std::vector<Vec3>& points) : PointCloud() { set_points(points); }
+
+    PointCloud(PointCloud&&) noexcept = default;
+    PointCloud& operator=(PointCloud&&) noexcept = default;
+    PointCloud(const PointCloud&) = delete;
+    PointCloud& operator=(const PointCloud&) = delete;
+
+    /// @brief The handle (NULL after a move). Still owned by this object.
+    o3d_pointcloud_t* get() const noexcept { return h_.get(); }
+    /// @brief Give up ownership: the caller destroys it with o3d_pointcloud_destroy.
+    o3d_pointcloud_t* release() noexcept { return h_.release(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+
+    /// @brief Deep copy.
+    PointCloud clone() const { return adopt([&](o3d_pointcloud_t** o) { return o3d_pointcloud_clone(o, get()); }); }
+
+    std::size_t size() const {
+        size_t n = 0;
+        check(o3d_pointcloud_size(get(), &n));
+        return n;
+    }
+    bool empty() const { return size() == 0; }
+    bool has_points() const { return flag(&o3d_pointcloud_has_points); }
+    bool has_normals() const { return flag(&o3d_pointcloud_has_normals); }
+    bool has_colors() const { return flag(&o3d_pointcloud_has_colors); }
+    void clear() { check(o3d_pointcloud_clear(get())); }
+
+    // --- setters: copied once; float input is converted in that copy ---
+    void set_points(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_points(get(), xyz, n)); }
+    void set_points(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_points_f32(get(), xyz, n)); }
+    void set_points(const std::vector<Vec3>& v) { set_points(flat(v), v.size()); }
+    void set_points(const std::vector<std::array<float, 3>>& v) { set_points(flat(v), v.size()); }
+    void set_normals(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_normals(get(), xyz, n)); }
+    void set_normals(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_normals_f32(get(), xyz, n)); }
+    void set_normals(const std::vector<Vec3>& v) { set_normals(flat(v), v.size()); }
+    void set_normals(const std::vector<std::array<float, 3>>& v) { set_normals(flat(v), v.size()); }
+    void set_colors(const double* rgb, std::size_t n) { check(o3d_pointcloud_set_colors(get(), rgb, n)); }
+    void set_colors(const float* rgb, std::size_t n) { check(o3d_pointcloud_set_colors_f32(get(), rgb, n)); }
+    void set_colors(const std::vector<Vec3>& v) { set_colors(flat(v), v.size()); }
+    void set_colors(const std::vector<std::array<float, 3>>& v) { set_colors(flat(v), v.size()); }
+
+    // --- copies ---
+    std::vector<Vec3> get_points() const { return copy(&o3d_pointcloud_get_points); }
+    std::vector<Vec3> get_normals() const { return copy(&o3d_pointcloud_get_normals); }
+    std::vector<Vec3> get_colors() const { return copy(&o3d_pointcloud_get_colors); }
+
+    // --- borrowed views: valid until the next mutating call or destruction ---
+    Rows3<const double> points() const { return view(&o3d_pointcloud_points_view); }
+    Rows3<const double> normals() const { return view(&o3d_pointcloud_normals_view); }
+    Rows3<const double> colors() const { return view(&o3d_pointcloud_colors_view); }
+    Rows3<double> points_mutable() { return mutable_view(&o3d_pointcloud_points_mutable_view); }
+    Rows3<double> normals_mutable() { return mutable_view(&o3d_pointcloud_normals_mutable_view); }
+    Rows3<double> colors_mutable() { return mutable_view(&o3d_pointcloud_colors_mutable_view); }
+
+    /// @brief Concatenate `other` (Open3D `pcd += other`).
+    PointCloud& operator+=(const PointCloud& other) {
+        check(o3d_pointcloud_append(get(), other.get()));
+        return *this;
+    }
+    PointCloud& append(const PointCloud& other) { return *this += other; }
+
+    PointCloud& transform(const Mat4& t) {
+        check(o3d_pointcloud_transform(get(), t.data()));
+        return *this;
+    }
+    PointCloud& translate(const Vec3& t, bool relative = true) {
+        check(o3d_pointcloud_translate(get(), t.data(), relative ? 1 : 0));
+        return *this;
+    }
+    /// @brief Rotate about the cloud's center.
+    PointCloud& rotate(const Mat3& r) {
+        check(o3d_pointcloud_rotate(get(), r.data(), nullptr));
+        return *this;
+    }
+    PointCloud& rotate(const Mat3& r, const Vec3& center) {
+        check(o3d_pointcloud_rotate(get(), r.data(), center.data()));
+        return *this;
+    }
+    /// @brief Scale about the cloud's center.
+    PointCloud& scale(double s) {
+        check(o3d_pointcloud_scale(get(), s, nullptr));
+        return *this;
+    }
+    PointCloud& scale(double s, const Vec3& center) {
+        check(o3d_pointcloud_scale(get(), s, center.data()));
+        return *this;
+    }
+
+    Vec3 get_min_bound() const { return vec3(&o3d_pointcloud_get_min_bound); }
+    Vec3 get_max_bound() const { return vec3(&o3d_pointcloud_get_max_bound); }
+    Vec3 get_center() const { return vec3(&o3d_pointcloud_get_center); }
+    /// @brief {min corner, max corner}.
+    std::array<Vec3, 2> get_axis_aligned_bounding_box() const {
+        std::array<Vec3, 2> box{};
+        check(o3d_pointcloud_get_axis_aligned_bounding_box(get(), box[0].data(), box[1].data()));
+        return box;
+    }
+    PointCloud& paint_uniform_color(const Vec3& rgb) {
+        check(o3d_pointcloud_paint_uniform_color(get(), rgb.data()));
+        return *this;
+    }
+    PointCloud select_by_index(const std::vector<int32_t>& indices, bool invert = false) const {
+        return adopt([&](o3d_pointcloud_t** o) {
+            return o3d_pointcloud_select_by_index(o, get(), indices.data(), indices.size(), invert ? 1 : 0);
+        });
+    }
+    PointCloud& remove_non_finite_points(bool remove_nan = true, bool remove_infinite = true) {
+        check(o3d_pointcloud_remove_non_finite_points(get(), remove_nan ? 1 : 0, remove_infinite ? 1 : 0));
+        return *this;
+    }
+    PointCloud& normalize_normals() {
+        check(o3d_pointcloud_normalize_normals(get()));
+        return *this;
+    }
+
+    PointCloud voxel_down_sample(double voxel_size) const {
+        return adopt([&](o3d_pointcloud_t** o) { return o3d_pointcloud_voxel_down_sample(o, get(), voxel_size); });
+    }
+    PointCloud uniform_down_sample(std::size_t every_k_points) const {
+        return adopt([&](o3d_pointcloud_t** o) { return o3d_pointcloud_uniform_down_sample(o, get(), every_k_points); });
+    }
+    PointCloud random_down_sample(double sampling_ratio, uint64_t seed = 0) const {
+        return adopt(
+            [&](o3d_pointcloud_t** o) { return o3d_pointcloud_random_down_sample(o, get(), sampling_ratio, seed); });
+    }
+    PointCloud farthest_point_down_sample(std::size_t num_samples, std::size_t start_index = 0) const {
+        return adopt([&](o3d_pointcloud_t** o) {
+            return o3d_pointcloud_farthest_point_down_sample(o, get(), num_samples, start_index);
+        });
+    }
+
+    /// @brief PCA normals (default KNN 30). num_threads 0 = library default.
+    PointCloud& estimate_normals(const SearchParam& param = SearchParam{}, int num_threads = 0) {
+        const o3d_search_param_t c = param.to_c();
+        check(o3d_pointcloud_estimate_normals(get(), &c, num_threads));
+        return *this;
+    }
+    PointCloud& orient_normals_to_align_with_direction(const Vec3& direction = {0, 0, 1}) {
+        check(o3d_pointcloud_orient_normals_to_align_with_direction(get(), direction.data()));
+        return *this;
+    }
+    PointCloud& orient_normals_towards_camera_location(const Vec3& camera_location = {0, 0, 0}) {
+        check(o3d_pointcloud_orient_normals_towards_camera_location(get(), camera_location.data()));
+        return *this;
+    }
+    std::vector<double> compute_nearest_neighbor_distance(int num_threads = 0) const {
+        size_t n = 0;
+        check(o3d_pointcloud_compute_nearest_neighbor_distance(get(), nullptr, 0, &n, num_threads));
+        std::vector<double> out(n);
+        check(o3d_pointcloud_compute_nearest_neighbor_distance(get(), out.data(), out.size(), &n, num_threads));
+        out.resize(n);
+        return out;
+    }
+    /// @brief For each point of this cloud, the distance to the closest point of `target`.
+    std::vector<double> compute_point_cloud_distance(const PointCloud& target, int num_threads = 0) const {
+        size_t n = 0;
+        check(o3d_pointcloud_compute_point_cloud_distance(get(), target.get(), nullptr, 0, &n, num_threads));
+        std::vector<double> out(n);
+        check(o3d_pointcloud_compute_point_cloud_distance(get(), target.get(), out.data(), out.size(), &n,
+                                                          num_threads));
+        out.resize(n);
+        return out;
+    }
+
+    /// @brief Run `create(o3d_pointcloud_t**)` and own what it returns.
+    template <typename F>
+    static PointCloud adopt(F&& create) {
+        o3d_pointcloud_t* p = nullptr;
+        check(create(&p));
+        return PointCloud(p);
+    }
+
+private:
+    template <typename T>
+    static const T* flat(const std::vector<std::array<T, 3>>& v) {
+        static_assert(sizeof(std::array<T, 3>) == 3 * sizeof(T), "std::array<T,3> must be 3 packed values");
+        return v.empty() ? nullptr : v.front().data();
+    }
+    bool flag(o3d_status (*fn)(const o3d_pointcloud_t*, int32_t*)) const {
+        int32_t out = 0;
+        check(fn(get(), &out));
+        return out != 0;
+    }
+    Vec3 vec3(o3d_status (*fn)(const o3d_pointcloud_t*, double*)) const {
+        Vec3 out{};
+        check(fn(get(), out.data()));
+        return out;
+    }
+    std::vector<Vec3> copy(o3d_status (*fn)(const o3d_pointcloud_t*, double*, size_t, size_t*)) const {
+        size_t n = 0;
+        check(fn(get(), nullptr, 0, &n));
+        std::vector<Vec3> out(n);
+        check(fn(get(), n ? out.front().data() : nullptr, n, &n));
+        out.resize(n);
+        return out;
+    }
+    Rows3<const double> view(o3d_status (*fn)(const o3d_pointcloud_t*, const double**, size_t*)) const {
+        const double* data = nullptr;
+        size_t n = 0;
+        check(fn(get(), &data, &n));
+        return {data, n};
+    }
+    Rows3<double> mutable_view(o3d_status (*fn)(o3d_pointcloud_t*, double**, size_t*)) {
+        double* data = nullptr;
+        size_t n = 0;
+        check(fn(get(), &data, &n));
+        return {data, n};
+    }
+
+    UniqueHandle<o3d_pointcloud_t, &o3d_pointcloud_destroy> h_;
+};
+
+}  // namespace o3dpp

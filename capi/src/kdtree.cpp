@@ -1,55 +1,149 @@
 // SPDX-License-Identifier: MIT
-// C API: kdtree.h (stubs, to be replaced by the implementation).
+// C API: kdtree.h over o3d::kdtree::KDTree.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
 #include "internal.h"
 #include "o3d/kdtree.h"
+#include "o3d/kdtree/kd_tree.h"
 
-// Unused-parameter warnings are expected in stubs.
-#pragma GCC diagnostic ignored "-Wunused-parameter"
+namespace o3d::capi {
+// Defined in pointcloud.cpp (one conversion for every call taking an o3d_search_param_t).
+o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
+int to_num_threads(int32_t num_threads);
+}  // namespace o3d::capi
+
+struct o3d_kdtree {
+    std::unique_ptr<const o3d::kdtree::KDTree> tree;  // owns a copy of its points: independent of any cloud
+};
+
+struct o3d_search_result {
+    o3d::kdtree::SearchResult result;
+};
+
+using o3d::capi::guard;
+using o3d::capi::require;
+
+namespace {
+
+template <typename T>
+std::vector<Eigen::Vector3d> rows_of(const T* xyz, size_t n, const char* name) {
+    if (n > 0 && !xyz) throw o3d::InvalidArgument(std::string(name) + " is NULL but n = " + std::to_string(n));
+    std::vector<Eigen::Vector3d> rows(n);
+    for (size_t i = 0; i < n; ++i)
+        rows[i] = Eigen::Vector3d(static_cast<double>(xyz[3 * i]), static_cast<double>(xyz[3 * i + 1]),
+                                  static_cast<double>(xyz[3 * i + 2]));
+    return rows;
+}
+
+void give(o3d_kdtree_t** out, std::vector<Eigen::Vector3d> points) {
+    auto handle = std::make_unique<o3d_kdtree>();
+    handle->tree = std::make_unique<const o3d::kdtree::KDTree>(std::move(points));
+    *out = handle.release();
+}
+
+const o3d::kdtree::KDTree& tree_of(const o3d_kdtree_t* tree) { return *require(tree, "tree")->tree; }
+const o3d::kdtree::SearchResult& result_of(const o3d_search_result_t* r) { return require(r, "result")->result; }
+
+template <typename T>
+void search(const o3d_kdtree_t* tree, const T* queries, size_t num_queries, const o3d_search_param_t* param,
+            int32_t num_threads, o3d_search_result_t** out) {
+    require(out, "out");
+    *out = nullptr;
+    const auto& t = tree_of(tree);
+    const auto search_param = o3d::capi::to_search_param(param);
+    const int threads = o3d::capi::to_num_threads(num_threads);
+    const auto rows = rows_of(queries, num_queries, "queries");
+    auto handle = std::make_unique<o3d_search_result>();
+    handle->result = t.search_batch(rows, search_param, threads);
+    *out = handle.release();
+}
+
+template <typename T>
+void copy_all(const std::vector<T>& src, T* out, size_t capacity) {
+    require(out, "out");
+    o3d::capi::copy_out(src.data(), src.size(), out, capacity, static_cast<size_t*>(nullptr));
+}
+
+}  // namespace
 
 extern "C" {
 
 O3D_API o3d_status o3d_kdtree_create_from_pointcloud(o3d_kdtree_t** out, const o3d_pointcloud_t* pc) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        give(out, require(pc, "pc")->cloud.points);
+    });
 }
 
 O3D_API o3d_status o3d_kdtree_create_from_points(o3d_kdtree_t** out, const double* xyz, size_t n) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        give(out, rows_of(xyz, n, "xyz"));
+    });
 }
 
-O3D_API void o3d_kdtree_destroy(o3d_kdtree_t* tree) {}
+O3D_API void o3d_kdtree_destroy(o3d_kdtree_t* tree) { delete tree; }
 
 O3D_API o3d_status o3d_kdtree_size(const o3d_kdtree_t* tree, size_t* out_n) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return guard(__func__, [&] {
+        const auto& t = tree_of(tree);
+        *require(out_n, "out_n") = t.size();
+    });
 }
 
-O3D_API o3d_status o3d_kdtree_search(const o3d_kdtree_t* tree, const double* queries, size_t num_queries, const o3d_search_param_t* param, int32_t num_threads, o3d_search_result_t** out) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_kdtree_search(const o3d_kdtree_t* tree, const double* queries, size_t num_queries,
+                                     const o3d_search_param_t* param, int32_t num_threads,
+                                     o3d_search_result_t** out) {
+    return guard(__func__, [&] { search(tree, queries, num_queries, param, num_threads, out); });
 }
 
-O3D_API o3d_status o3d_kdtree_search_f32(const o3d_kdtree_t* tree, const float* queries, size_t num_queries, const o3d_search_param_t* param, int32_t num_threads, o3d_search_result_t** out) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_kdtree_search_f32(const o3d_kdtree_t* tree, const float* queries, size_t num_queries,
+                                         const o3d_search_param_t* param, int32_t num_threads,
+                                         o3d_search_result_t** out) {
+    return guard(__func__, [&] { search(tree, queries, num_queries, param, num_threads, out); });
 }
 
-O3D_API void o3d_search_result_destroy(o3d_search_result_t* result) {}
+O3D_API void o3d_search_result_destroy(o3d_search_result_t* result) { delete result; }
 
-O3D_API o3d_status o3d_search_result_counts(const o3d_search_result_t* result, size_t* out_num_queries, size_t* out_total) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_search_result_counts(const o3d_search_result_t* result, size_t* out_num_queries,
+                                            size_t* out_total) {
+    return guard(__func__, [&] {
+        const auto& r = result_of(result);
+        require(out_num_queries, "out_num_queries");
+        require(out_total, "out_total");
+        *out_num_queries = r.offsets.size() - 1;
+        *out_total = r.indices.size();
+    });
 }
 
-O3D_API o3d_status o3d_search_result_view(const o3d_search_result_t* result, const int64_t** out_offsets, const int32_t** out_indices, const double** out_distances2) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_search_result_view(const o3d_search_result_t* result, const int64_t** out_offsets,
+                                          const int32_t** out_indices, const double** out_distances2) {
+    return guard(__func__, [&] {
+        const auto& r = result_of(result);
+        require(out_offsets, "out_offsets");
+        require(out_indices, "out_indices");
+        require(out_distances2, "out_distances2");
+        *out_offsets = r.offsets.data();
+        *out_indices = r.indices.empty() ? nullptr : r.indices.data();
+        *out_distances2 = r.distances2.empty() ? nullptr : r.distances2.data();
+    });
 }
 
 O3D_API o3d_status o3d_search_result_get_offsets(const o3d_search_result_t* result, int64_t* out, size_t capacity) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return guard(__func__, [&] { copy_all(result_of(result).offsets, out, capacity); });
 }
 
 O3D_API o3d_status o3d_search_result_get_indices(const o3d_search_result_t* result, int32_t* out, size_t capacity) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+    return guard(__func__, [&] { copy_all(result_of(result).indices, out, capacity); });
 }
 
-O3D_API o3d_status o3d_search_result_get_distances2(const o3d_search_result_t* result, double* out, size_t capacity) {
-    return o3d::capi::guard(__func__, [&]() -> o3d_status { throw o3d::Unsupported("not implemented yet"); });
+O3D_API o3d_status o3d_search_result_get_distances2(const o3d_search_result_t* result, double* out,
+                                                    size_t capacity) {
+    return guard(__func__, [&] { copy_all(result_of(result).distances2, out, capacity); });
 }
 
 }  // extern "C"

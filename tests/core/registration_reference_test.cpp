@@ -142,10 +142,13 @@ TEST(RegistrationSharedData, RecoversKnownMotionOfRealScan) {
         const Eigen::Matrix4d expected = unmoved.transformation * motion.inverse();
         const double angle = rotation_angle_degrees(fine.transformation, expected);
         const double offset = (fine.transformation.topRightCorner<3, 1>() - expected.topRightCorner<3, 1>()).norm();
-        std::printf("estimation %d: angle %.3g deg, offset %.3g m, fitness %.4f vs %.4f\n", static_cast<int>(estimation),
-                    angle, offset, fine.fitness, unmoved.fitness);
-        EXPECT_LT(angle, 0.05);
-        EXPECT_LT(offset, 0.002);
+        // Point-to-point's fixed point is pinned only to a fraction of the ~3 cm sample spacing (its pairs are
+        // piecewise constant in the pose), so two starts settle ~0.1-0.25 deg / 2-6 mm apart; point-to-plane
+        // slides along the surfaces and agrees ~10x closer. Both bounds stay below the pair's own 0.4 deg /
+        // 17 mm misalignment, while a run that misses the basin is off by degrees and decimetres.
+        const bool p2p = estimation == reg::Estimation::PointToPoint;
+        EXPECT_LT(angle, p2p ? 0.3 : 0.05);
+        EXPECT_LT(offset, p2p ? 0.01 : 0.002);
         EXPECT_NEAR(fine.fitness, unmoved.fitness, 0.01);
     }
 }

@@ -1,0 +1,180 @@
+//! Layout of every `#[repr(C)]` struct: against values computed by hand from the headers, against a
+//! C compiler (when one is available: `$CC` or `cc`), and against the library itself (each
+//! `o3d_*_init` must accept `size_of::<T>()` as `struct_size`).
+use std::mem::{align_of, offset_of, size_of};
+use std::path::PathBuf;
+use std::process::Command;
+
+use o3d_sys::*;
+
+/// (C expression, value computed from the Rust declarations, value computed by hand on LP64).
+fn rust_layout() -> Vec<(&'static str, usize, usize)> {
+    vec![
+        ("sizeof(o3d_search_param_t)", size_of::<o3d_search_param_t>(), 24),
+        ("_Alignof(o3d_search_param_t)", align_of::<o3d_search_param_t>(), 8),
+        ("offsetof(o3d_search_param_t, struct_size)", offset_of!(o3d_search_param_t, struct_size), 0),
+        ("offsetof(o3d_search_param_t, kind)", offset_of!(o3d_search_param_t, kind), 4),
+        ("offsetof(o3d_search_param_t, knn)", offset_of!(o3d_search_param_t, knn), 8),
+        ("offsetof(o3d_search_param_t, radius)", offset_of!(o3d_search_param_t, radius), 16),
+        ("sizeof(o3d_read_options_t)", size_of::<o3d_read_options_t>(), 12),
+        ("_Alignof(o3d_read_options_t)", align_of::<o3d_read_options_t>(), 4),
+        ("offsetof(o3d_read_options_t, struct_size)", offset_of!(o3d_read_options_t, struct_size), 0),
+        ("offsetof(o3d_read_options_t, remove_nan_points)", offset_of!(o3d_read_options_t, remove_nan_points), 4),
+        (
+            "offsetof(o3d_read_options_t, remove_infinite_points)",
+            offset_of!(o3d_read_options_t, remove_infinite_points),
+            8,
+        ),
+        ("sizeof(o3d_write_options_t)", size_of::<o3d_write_options_t>(), 12),
+        ("_Alignof(o3d_write_options_t)", align_of::<o3d_write_options_t>(), 4),
+        ("offsetof(o3d_write_options_t, struct_size)", offset_of!(o3d_write_options_t, struct_size), 0),
+        ("offsetof(o3d_write_options_t, write_ascii)", offset_of!(o3d_write_options_t, write_ascii), 4),
+        ("offsetof(o3d_write_options_t, compressed)", offset_of!(o3d_write_options_t, compressed), 8),
+        ("sizeof(o3d_icp_options_t)", size_of::<o3d_icp_options_t>(), 56),
+        ("_Alignof(o3d_icp_options_t)", align_of::<o3d_icp_options_t>(), 8),
+        ("offsetof(o3d_icp_options_t, struct_size)", offset_of!(o3d_icp_options_t, struct_size), 0),
+        ("offsetof(o3d_icp_options_t, estimation)", offset_of!(o3d_icp_options_t, estimation), 4),
+        ("offsetof(o3d_icp_options_t, with_scaling)", offset_of!(o3d_icp_options_t, with_scaling), 8),
+        ("offsetof(o3d_icp_options_t, relative_fitness)", offset_of!(o3d_icp_options_t, relative_fitness), 16),
+        ("offsetof(o3d_icp_options_t, relative_rmse)", offset_of!(o3d_icp_options_t, relative_rmse), 24),
+        ("offsetof(o3d_icp_options_t, max_iteration)", offset_of!(o3d_icp_options_t, max_iteration), 32),
+        ("offsetof(o3d_icp_options_t, num_threads)", offset_of!(o3d_icp_options_t, num_threads), 36),
+        ("offsetof(o3d_icp_options_t, progress)", offset_of!(o3d_icp_options_t, progress), 40),
+        ("offsetof(o3d_icp_options_t, user_data)", offset_of!(o3d_icp_options_t, user_data), 48),
+        // Callback pointers are plain (nullable) function pointers.
+        ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
+        ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
+        ("sizeof(o3d_status)", size_of::<o3d_status>(), 4),
+    ]
+}
+
+#[test]
+#[cfg(all(target_pointer_width = "64", not(windows)))]
+fn layout_matches_hand_computed_lp64_values() {
+    for (expr, rust, hand) in rust_layout() {
+        assert_eq!(rust, hand, "{expr}: Rust gives {rust}, the header gives {hand}");
+    }
+}
+
+/// Compile and run a C program printing every expression of `rust_layout()`; None without a compiler.
+fn c_layout() -> Option<Vec<(String, usize)>> {
+    let include = match std::env::var_os("O3D_INCLUDE_DIR") {
+        Some(dir) => PathBuf::from(dir),
+        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../capi/include"),
+    };
+    let dir = std::env::temp_dir().join(format!("o3d-sys-layout-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut src = String::from("#include <stdio.h>\n#include <stddef.h>\n#include \"o3d/o3d.h\"\nint main(void) {\n");
+    for (expr, _, _) in rust_layout() {
+        src += &format!("    printf(\"%s=%zu\\n\", \"{expr}\", (size_t)({expr}));\n");
+    }
+    src += "    return 0;\n}\n";
+    let c_file = dir.join("layout.c");
+    let exe = dir.join("layout");
+    std::fs::write(&c_file, src).unwrap();
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
+    let compiled = Command::new(&cc)
+        .args(["-std=c11", "-I"])
+        .arg(&include)
+        .arg(&c_file)
+        .arg("-o")
+        .arg(&exe)
+        .status();
+    match compiled {
+        Ok(s) if s.success() => {}
+        Ok(s) => panic!("{cc} failed ({s}) on the layout probe: do the headers still compile as C11?"),
+        Err(e) => {
+            eprintln!("note: no C compiler ({cc}: {e}); layout checked against hand-computed values only");
+            return None;
+        }
+    }
+    let out = Command::new(&exe).output().unwrap();
+    assert!(out.status.success());
+    let _ = std::fs::remove_dir_all(&dir);
+    Some(
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .map(|l| {
+                let (k, v) = l.rsplit_once('=').unwrap();
+                (k.to_string(), v.parse().unwrap())
+            })
+            .collect(),
+    )
+}
+
+#[test]
+fn layout_matches_the_c_compiler() {
+    let Some(c) = c_layout() else { return };
+    let rust = rust_layout();
+    assert_eq!(c.len(), rust.len());
+    for ((expr, rust, _), (c_expr, c_value)) in rust.iter().zip(&c) {
+        assert_eq!(expr, c_expr);
+        assert_eq!(rust, c_value, "{expr}: Rust gives {rust}, C gives {c_value}");
+    }
+}
+
+fn last_message() -> String {
+    unsafe { std::ffi::CStr::from_ptr(o3d_last_error_message()).to_string_lossy().into_owned() }
+}
+
+#[test]
+fn search_param_init_accepts_rust_size_and_fills_defaults() {
+    unsafe {
+        let mut p: o3d_search_param_t = std::mem::zeroed();
+        let st = o3d_search_param_init(&mut p, size_of::<o3d_search_param_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(p.struct_size as usize, size_of::<o3d_search_param_t>());
+        assert_eq!((p.kind, p.knn, p.radius), (O3D_SEARCH_KNN, 30, 0.0));
+    }
+}
+
+#[test]
+fn io_options_init_accepts_rust_sizes_and_fills_defaults() {
+    unsafe {
+        let mut r: o3d_read_options_t = std::mem::zeroed();
+        let st = o3d_read_options_init(&mut r, size_of::<o3d_read_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(r.struct_size as usize, size_of::<o3d_read_options_t>());
+        assert_eq!((r.remove_nan_points, r.remove_infinite_points), (0, 0));
+
+        let mut w: o3d_write_options_t = std::mem::zeroed();
+        let st = o3d_write_options_init(&mut w, size_of::<o3d_write_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(w.struct_size as usize, size_of::<o3d_write_options_t>());
+        assert_eq!((w.write_ascii, w.compressed), (0, 0));
+    }
+}
+
+#[test]
+fn icp_options_init_accepts_rust_size_and_fills_defaults() {
+    unsafe {
+        let mut i: o3d_icp_options_t = std::mem::zeroed();
+        let st = o3d_icp_options_init(&mut i, size_of::<o3d_icp_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(i.struct_size as usize, size_of::<o3d_icp_options_t>());
+        assert_eq!((i.estimation, i.with_scaling), (O3D_ESTIMATION_POINT_TO_POINT, 0));
+        assert_eq!((i.relative_fitness, i.relative_rmse, i.max_iteration), (1e-6, 1e-6, 30));
+        assert_eq!(i.num_threads, 0);
+        assert!(i.progress.is_none());
+        assert!(i.user_data.is_null());
+
+        // A size larger than the library knows is refused, with a message.
+        let mut big = [0u64; 32];
+        let st = o3d_icp_options_init(big.as_mut_ptr().cast(), 256);
+        assert_eq!(st, O3D_ERROR_INVALID_ARGUMENT);
+        assert_eq!(o3d_last_error_code(), O3D_ERROR_INVALID_ARGUMENT);
+        assert!(!last_message().is_empty());
+    }
+}
+
+#[test]
+fn version_constants_match_the_library() {
+    unsafe {
+        assert_eq!(o3d_version_major(), O3D_VERSION_MAJOR);
+        assert_eq!(o3d_version_minor(), O3D_VERSION_MINOR);
+        assert_eq!(o3d_version_patch(), O3D_VERSION_PATCH);
+        let v = std::ffi::CStr::from_ptr(o3d_version()).to_str().unwrap();
+        assert_eq!(v, format!("{O3D_VERSION_MAJOR}.{O3D_VERSION_MINOR}.{O3D_VERSION_PATCH}"));
+    }
+}

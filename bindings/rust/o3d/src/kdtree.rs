@@ -1,0 +1,207 @@
+//! `KDTreeFlann` (o3d.geometry.KDTreeFlann) with one-call batch searches.
+use std::fmt;
+use std::ptr::{self, NonNull};
+use std::slice;
+
+use o3d_sys as sys;
+
+use crate::error::{check, Error, ErrorCode, Result};
+use crate::pointcloud::{PointCloud, SearchParam};
+
+/// A KD-tree over 3-D points. It copies the points, so it outlives the cloud it was built from.
+/// `Send` and `Sync`: searches take the tree `const` and may run concurrently.
+pub struct KDTreeFlann {
+    raw: NonNull<sys::o3d_kdtree_t>,
+}
+
+// SAFETY: see the type docs and the C threading rule (searches are const calls).
+unsafe impl Send for KDTreeFlann {}
+unsafe impl Sync for KDTreeFlann {}
+
+/// Flat result of a batch search: the neighbours of query `i` are
+/// `indices[offsets[i]..offsets[i+1]]`, sorted by increasing distance, with squared distances in
+/// `distances2` at the same positions.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SearchResult {
+    /// `num_queries + 1` offsets into `indices` / `distances2`.
+    pub offsets: Vec<i64>,
+    /// Neighbour indices into the tree's points.
+    pub indices: Vec<i32>,
+    /// Squared distances to the neighbours.
+    pub distances2: Vec<f64>,
+}
+
+impl SearchResult {
+    /// Number of queries.
+    pub fn num_queries(&self) -> usize {
+        self.offsets.len().saturating_sub(1)
+    }
+
+    /// Neighbour indices and squared distances of query `i`.
+    pub fn neighbors(&self, i: usize) -> (&[i32], &[f64]) {
+        let (a, b) = (self.offsets[i] as usize, self.offsets[i + 1] as usize);
+        (&self.indices[a..b], &self.distances2[a..b])
+    }
+}
+
+/// A batch search result still owned by the library, read through zero-copy views.
+pub struct SearchResultRef {
+    raw: NonNull<sys::o3d_search_result_t>,
+}
+
+// SAFETY: immutable after creation; every accessor is a const call.
+unsafe impl Send for SearchResultRef {}
+unsafe impl Sync for SearchResultRef {}
+
+impl SearchResultRef {
+    /// (number of queries, total number of neighbours).
+    pub fn counts(&self) -> Result<(usize, usize)> {
+        let (mut q, mut t) = (0, 0);
+        // SAFETY: valid handle and out-pointers.
+        check(unsafe { sys::o3d_search_result_counts(self.raw.as_ptr(), &mut q, &mut t) })?;
+        Ok((q, t))
+    }
+
+    /// Zero-copy (offsets, indices, squared distances), valid as long as `self`.
+    pub fn view(&self) -> Result<(&[i64], &[i32], &[f64])> {
+        let (q, t) = self.counts()?;
+        let (mut o, mut i, mut d) = (ptr::null(), ptr::null(), ptr::null());
+        // SAFETY: valid handle and out-pointers.
+        check(unsafe { sys::o3d_search_result_view(self.raw.as_ptr(), &mut o, &mut i, &mut d) })?;
+        // SAFETY: the header promises q + 1 offsets and t indices / distances, valid until destroy.
+        unsafe {
+            let mk = |p: *const i64, n| if p.is_null() || n == 0 { &[][..] } else { slice::from_raw_parts(p, n) };
+            let offsets = mk(o, q + 1);
+            let indices = if i.is_null() || t == 0 { &[][..] } else { slice::from_raw_parts(i, t) };
+            let dist = if d.is_null() || t == 0 { &[][..] } else { slice::from_raw_parts(d, t) };
+            Ok((offsets, indices, dist))
+        }
+    }
+
+    /// Copy into an owned [`SearchResult`] (`o3d_search_result_get_*`).
+    pub fn to_search_result(&self) -> Result<SearchResult> {
+        let (q, t) = self.counts()?;
+        let mut r = SearchResult { offsets: vec![0; q + 1], indices: vec![0; t], distances2: vec![0.0; t] };
+        let raw = self.raw.as_ptr();
+        // SAFETY: each buffer has exactly the capacity passed.
+        unsafe {
+            check(sys::o3d_search_result_get_offsets(raw, r.offsets.as_mut_ptr(), r.offsets.len()))?;
+            check(sys::o3d_search_result_get_indices(raw, r.indices.as_mut_ptr(), r.indices.len()))?;
+            check(sys::o3d_search_result_get_distances2(raw, r.distances2.as_mut_ptr(), r.distances2.len()))?;
+        }
+        Ok(r)
+    }
+}
+
+impl Drop for SearchResultRef {
+    fn drop(&mut self) {
+        // SAFETY: owned handle, destroyed once.
+        unsafe { sys::o3d_search_result_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for SearchResultRef {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("SearchResultRef").field("counts", &self.counts().ok()).finish()
+    }
+}
+
+fn wrap_tree(f: impl FnOnce(*mut *mut sys::o3d_kdtree_t) -> sys::o3d_status) -> Result<KDTreeFlann> {
+    let mut out = ptr::null_mut();
+    check(f(&mut out))?;
+    NonNull::new(out)
+        .map(|raw| KDTreeFlann { raw })
+        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no tree"))
+}
+
+fn wrap_result(f: impl FnOnce(*mut *mut sys::o3d_search_result_t) -> sys::o3d_status) -> Result<SearchResultRef> {
+    let mut out = ptr::null_mut();
+    check(f(&mut out))?;
+    NonNull::new(out)
+        .map(|raw| SearchResultRef { raw })
+        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no result"))
+}
+
+impl KDTreeFlann {
+    /// Build a tree over the points of `cloud` (copied).
+    pub fn new(cloud: &PointCloud) -> Result<KDTreeFlann> {
+        // SAFETY: valid cloud handle.
+        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_pointcloud(out, cloud.as_raw()) })
+    }
+
+    /// Build a tree over `points` (copied). Non-finite coordinates → Err.
+    pub fn from_points(points: &[[f64; 3]]) -> Result<KDTreeFlann> {
+        // SAFETY: points.len() rows of 3 contiguous doubles.
+        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_points(out, points.as_ptr().cast(), points.len()) })
+    }
+
+    /// Number of indexed points.
+    pub fn len(&self) -> Result<usize> {
+        let mut n = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { sys::o3d_kdtree_size(self.raw.as_ptr(), &mut n) })?;
+        Ok(n)
+    }
+
+    /// Search every row of `queries` at once (in parallel), keeping the result in the library.
+    pub fn search_ref(&self, queries: &[[f64; 3]], param: SearchParam) -> Result<SearchResultRef> {
+        let p = param.to_raw()?;
+        // SAFETY: queries.len() rows of 3 doubles; valid parameter struct.
+        wrap_result(|out| unsafe {
+            sys::o3d_kdtree_search(self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0, out)
+        })
+    }
+
+    /// As [`Self::search_ref`] with float32 queries.
+    pub fn search_ref_f32(&self, queries: &[[f32; 3]], param: SearchParam) -> Result<SearchResultRef> {
+        let p = param.to_raw()?;
+        // SAFETY: queries.len() rows of 3 floats; valid parameter struct.
+        wrap_result(|out| unsafe {
+            sys::o3d_kdtree_search_f32(self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0, out)
+        })
+    }
+
+    /// Search every row of `queries` at once; the result is copied into owned vectors.
+    pub fn search(&self, queries: &[[f64; 3]], param: SearchParam) -> Result<SearchResult> {
+        self.search_ref(queries, param)?.to_search_result()
+    }
+
+    /// As [`Self::search`] with float32 queries.
+    pub fn search_f32(&self, queries: &[[f32; 3]], param: SearchParam) -> Result<SearchResult> {
+        self.search_ref_f32(queries, param)?.to_search_result()
+    }
+
+    /// One query (Open3D `search_vector_3d`): (indices, squared distances), nearest first.
+    pub fn search_vector_3d(&self, query: [f64; 3], param: SearchParam) -> Result<(Vec<i32>, Vec<f64>)> {
+        let r = self.search(&[query], param)?;
+        Ok((r.indices, r.distances2))
+    }
+
+    /// The `knn` nearest points of `query` (Open3D `search_knn_vector_3d`).
+    pub fn search_knn_vector_3d(&self, query: [f64; 3], knn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_3d(query, SearchParam::Knn { knn })
+    }
+
+    /// All points within `radius` of `query` (Open3D `search_radius_vector_3d`).
+    pub fn search_radius_vector_3d(&self, query: [f64; 3], radius: f64) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_3d(query, SearchParam::Radius { radius })
+    }
+
+    /// At most `max_nn` nearest points within `radius` (Open3D `search_hybrid_vector_3d`).
+    pub fn search_hybrid_vector_3d(&self, query: [f64; 3], radius: f64, max_nn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_3d(query, SearchParam::Hybrid { radius, max_nn })
+    }
+}
+
+impl Drop for KDTreeFlann {
+    fn drop(&mut self) {
+        // SAFETY: owned handle, destroyed once.
+        unsafe { sys::o3d_kdtree_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for KDTreeFlann {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("KDTreeFlann").field("len", &self.len().ok()).finish()
+    }
+}

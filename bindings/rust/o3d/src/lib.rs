@@ -1,0 +1,144 @@
+//! Safe Rust bindings for **o3d**, a library for 3D data processing (an Open3D replacement).
+//!
+//! Built only on the C API (`o3d-sys`, `libo3d.so.0`). Names follow Open3D:
+//! [`PointCloud`] (`o3d.geometry.PointCloud`), [`KDTreeFlann`], [`io::read_point_cloud`],
+//! [`registration::registration_icp`].
+//!
+//! * Every fallible call returns [`Result<T, Error>`](Error); the error carries the library's message.
+//! * Handles are owned (`Drop` destroys them); views such as [`PointCloud::points`] are zero-copy
+//!   slices borrowed from the handle, so the borrow checker enforces "valid until the next mutation".
+//! * Threading (the C rule: concurrent calls on one handle are safe when all take it `const`): the
+//!   handles are `Send` and `Sync`; every `&self` method calls only `const` C functions and every
+//!   mutation takes `&mut self`.
+//! * Callbacks (ICP progress, logging) are Rust closures run behind `catch_unwind`; a panic never
+//!   crosses the C boundary.
+//!
+//! ```no_run
+//! use o3d::{io, PointCloud, SearchParam};
+//! let pcd = io::read_point_cloud("cloud_bin_0.pcd", "auto", &Default::default())?;
+//! let mut down = pcd.voxel_down_sample(0.05)?;
+//! down.estimate_normals(SearchParam::Hybrid { radius: 0.1, max_nn: 30 })?;
+//! io::write_point_cloud("down.ply", &down, "auto", &Default::default())?;
+//! # Ok::<(), o3d::Error>(())
+//! ```
+#![warn(missing_docs)]
+
+use std::ffi::{c_char, c_void, CStr};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::{Arc, RwLock};
+
+pub use o3d_sys as sys;
+
+mod error;
+pub mod io;
+mod kdtree;
+mod panic;
+mod pointcloud;
+pub mod registration;
+
+pub use error::{Error, ErrorCode, Result};
+pub use kdtree::{KDTreeFlann, SearchResult, SearchResultRef};
+pub use pointcloud::{PointCloud, SearchParam};
+
+use error::check;
+
+/// Library version string, e.g. `"0.1.0"`.
+pub fn version() -> &'static str {
+    // SAFETY: static storage, never NULL.
+    unsafe { CStr::from_ptr(sys::o3d_version()) }.to_str().unwrap_or("?")
+}
+
+/// Library (major, minor, patch) version; major equals the SONAME number.
+pub fn version_numbers() -> (i32, i32, i32) {
+    // SAFETY: no arguments.
+    unsafe { (sys::o3d_version_major(), sys::o3d_version_minor(), sys::o3d_version_patch()) }
+}
+
+/// Log levels, most severe first (`O3D_LOG_*`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum LogLevel {
+    /// `O3D_LOG_ERROR`
+    Error = 0,
+    /// `O3D_LOG_WARNING`
+    Warning = 1,
+    /// `O3D_LOG_INFO`
+    Info = 2,
+    /// `O3D_LOG_DEBUG`
+    Debug = 3,
+}
+
+impl LogLevel {
+    fn from_raw(level: i32) -> LogLevel {
+        match level {
+            sys::O3D_LOG_ERROR => LogLevel::Error,
+            sys::O3D_LOG_WARNING => LogLevel::Warning,
+            sys::O3D_LOG_INFO => LogLevel::Info,
+            _ => LogLevel::Debug,
+        }
+    }
+}
+
+/// Show messages at `level` and more severe (default [`LogLevel::Warning`]).
+pub fn set_verbosity_level(level: LogLevel) -> Result<()> {
+    // SAFETY: plain value.
+    check(unsafe { sys::o3d_set_verbosity_level(level as i32) })
+}
+
+/// The current verbosity level.
+pub fn get_verbosity_level() -> LogLevel {
+    // SAFETY: no arguments.
+    LogLevel::from_raw(unsafe { sys::o3d_get_verbosity_level() })
+}
+
+/// Default thread count for parallel algorithms (0 restores the OpenMP default, the core count).
+pub fn set_num_threads(num_threads: usize) -> Result<()> {
+    let n = i32::try_from(num_threads)
+        .map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("num_threads {num_threads} is too large")))?;
+    // SAFETY: plain value.
+    check(unsafe { sys::o3d_set_num_threads(n) })
+}
+
+/// The thread count parallel algorithms use now (>= 1).
+pub fn get_num_threads() -> usize {
+    // SAFETY: no arguments.
+    unsafe { sys::o3d_get_num_threads() }.max(1) as usize
+}
+
+type LogFn = dyn Fn(LogLevel, &str) + Send + Sync;
+
+/// The installed log closure. The C side gets a trampoline and no user_data: the closure is looked
+/// up here, so replacing it can never free one that another thread is running.
+static LOG_CALLBACK: RwLock<Option<Arc<LogFn>>> = RwLock::new(None);
+
+unsafe extern "C" fn log_trampoline(level: i32, message: *const c_char, _user_data: *mut c_void) {
+    let callback = match LOG_CALLBACK.read() {
+        Ok(guard) => guard.clone(),
+        Err(poisoned) => poisoned.into_inner().clone(),
+    };
+    let Some(callback) = callback else { return };
+    let text = if message.is_null() {
+        std::borrow::Cow::Borrowed("")
+    } else {
+        // SAFETY: the library passes a NUL-terminated string valid for the call.
+        unsafe { CStr::from_ptr(message) }.to_string_lossy()
+    };
+    // Log lines may come from worker threads and cannot report failure: a panicking log closure
+    // is contained here and its payload dropped.
+    if catch_unwind(AssertUnwindSafe(|| callback(LogLevel::from_raw(level), &text))).is_err() {
+        eprintln!("o3d: the log callback panicked; the panic was contained");
+    }
+}
+
+/// Route the library's log lines to `callback` (global, for all threads); `None` restores the
+/// default sink (stderr). The closure may be called from any thread, one line at a time.
+pub fn set_log_callback<F>(callback: Option<F>) -> Result<()>
+where
+    F: Fn(LogLevel, &str) + Send + Sync + 'static,
+{
+    let new: Option<Arc<LogFn>> = callback.map(|f| Arc::new(f) as Arc<LogFn>);
+    let install = new.is_some();
+    *LOG_CALLBACK.write().unwrap_or_else(|p| p.into_inner()) = new;
+    let trampoline: sys::o3d_log_callback = if install { Some(log_trampoline) } else { None };
+    // SAFETY: the trampoline is a plain function; user_data is unused.
+    check(unsafe { sys::o3d_set_log_callback(trampoline, std::ptr::null_mut()) })
+}

@@ -1,0 +1,533 @@
+//! `PointCloud` (o3d.geometry.PointCloud) and `SearchParam` (KDTreeSearchParam*).
+use std::fmt;
+use std::mem::{size_of, MaybeUninit};
+use std::ptr::{self, NonNull};
+use std::slice;
+
+use o3d_sys as sys;
+
+use crate::error::{check, Error, ErrorCode, Result};
+
+/// Neighbourhood search parameter (Open3D `KDTreeSearchParamKNN` / `Radius` / `Hybrid`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SearchParam {
+    /// The `knn` nearest points.
+    Knn {
+        /// Neighbour count.
+        knn: usize,
+    },
+    /// All points within `radius`.
+    Radius {
+        /// Search radius, in the units of the cloud.
+        radius: f64,
+    },
+    /// At most `max_nn` nearest points within `radius`.
+    Hybrid {
+        /// Search radius, in the units of the cloud.
+        radius: f64,
+        /// Neighbour count limit.
+        max_nn: usize,
+    },
+}
+
+impl Default for SearchParam {
+    /// KNN with 30 neighbours, as Open3D's `KDTreeSearchParamKNN()`.
+    fn default() -> Self {
+        SearchParam::Knn { knn: 30 }
+    }
+}
+
+impl SearchParam {
+    /// The C struct, started from `o3d_search_param_init` so `struct_size` is right.
+    pub(crate) fn to_raw(self) -> Result<sys::o3d_search_param_t> {
+        let mut raw = MaybeUninit::<sys::o3d_search_param_t>::zeroed();
+        // SAFETY: raw is writable and of the size we pass.
+        check(unsafe { sys::o3d_search_param_init(raw.as_mut_ptr(), size_of::<sys::o3d_search_param_t>() as u32) })?;
+        // SAFETY: zeroed then filled by init; every bit pattern is valid for these fields.
+        let mut raw = unsafe { raw.assume_init() };
+        let count = |n: usize| {
+            i32::try_from(n).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("neighbour count {n} is too large")))
+        };
+        match self {
+            SearchParam::Knn { knn } => {
+                raw.kind = sys::O3D_SEARCH_KNN;
+                raw.knn = count(knn)?;
+            }
+            SearchParam::Radius { radius } => {
+                raw.kind = sys::O3D_SEARCH_RADIUS;
+                raw.radius = radius;
+            }
+            SearchParam::Hybrid { radius, max_nn } => {
+                raw.kind = sys::O3D_SEARCH_HYBRID;
+                raw.radius = radius;
+                raw.knn = count(max_nn)?;
+            }
+        }
+        Ok(raw)
+    }
+}
+
+/// A point cloud: points, and optionally one normal and one color (RGB in [0,1]) per point.
+///
+/// Owns an `o3d_pointcloud_t`. `Send` and `Sync`: `&self` methods only read (the C API allows
+/// concurrent `const` calls), every mutation takes `&mut self`.
+pub struct PointCloud {
+    raw: NonNull<sys::o3d_pointcloud_t>,
+}
+
+// SAFETY: the C API lets a handle be used from any thread, and concurrent calls on it are safe
+// when all take it `const`; `&self` methods only make `const` calls.
+unsafe impl Send for PointCloud {}
+unsafe impl Sync for PointCloud {}
+
+type ViewFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut *const f64, *mut usize) -> sys::o3d_status;
+type MutViewFn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *mut *mut f64, *mut usize) -> sys::o3d_status;
+type GetFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64, usize, *mut usize) -> sys::o3d_status;
+type SetFn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *const f64, usize) -> sys::o3d_status;
+type SetF32Fn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *const f32, usize) -> sys::o3d_status;
+type FlagFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut i32) -> sys::o3d_status;
+
+/// Run a C constructor writing `*out`, and wrap the handle.
+pub(crate) fn new_cloud(f: impl FnOnce(*mut *mut sys::o3d_pointcloud_t) -> sys::o3d_status) -> Result<PointCloud> {
+    let mut out = ptr::null_mut();
+    check(f(&mut out))?;
+    NonNull::new(out)
+        .map(|raw| PointCloud { raw })
+        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no cloud"))
+}
+
+/// Copy out a variable-length array with the query-then-copy convention (`out` NULL → count).
+pub(crate) fn copy_out<T: Copy + Default>(
+    mut f: impl FnMut(*mut T, usize, *mut usize) -> sys::o3d_status,
+) -> Result<Vec<T>> {
+    let mut n = 0usize;
+    check(f(ptr::null_mut(), 0, &mut n))?;
+    let mut out = vec![T::default(); n];
+    let mut written = 0usize;
+    check(f(out.as_mut_ptr(), n, &mut written))?;
+    out.truncate(written);
+    Ok(out)
+}
+
+fn flat<T>(rows: &[[T; 3]]) -> *const T {
+    rows.as_ptr().cast()
+}
+
+fn opt_ptr(v: &Option<[f64; 3]>) -> *const f64 {
+    v.as_ref().map_or(ptr::null(), |a| a.as_ptr())
+}
+
+impl PointCloud {
+    /// A new empty cloud.
+    pub fn new() -> Result<PointCloud> {
+        // SAFETY: out-pointer provided by new_cloud.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_create(out) })
+    }
+
+    /// A new cloud holding `points`.
+    pub fn from_points(points: &[[f64; 3]]) -> Result<PointCloud> {
+        let mut pc = PointCloud::new()?;
+        pc.set_points(points)?;
+        Ok(pc)
+    }
+
+    /// Take ownership of a raw handle (e.g. from `o3d-sys`).
+    ///
+    /// # Safety
+    /// `raw` must be a valid cloud handle owned by the caller; it is destroyed on drop.
+    pub unsafe fn from_raw(raw: NonNull<sys::o3d_pointcloud_t>) -> PointCloud {
+        PointCloud { raw }
+    }
+
+    /// The raw handle, still owned by `self`.
+    pub fn as_raw(&self) -> *const sys::o3d_pointcloud_t {
+        self.raw.as_ptr()
+    }
+
+    fn raw_mut(&mut self) -> *mut sys::o3d_pointcloud_t {
+        self.raw.as_ptr()
+    }
+
+    /// Deep copy (`o3d_pointcloud_clone`); [`Clone::clone`] panics where this returns `Err`.
+    pub fn try_clone(&self) -> Result<PointCloud> {
+        // SAFETY: valid source handle.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_clone(out, self.as_raw()) })
+    }
+
+    /// Number of points.
+    pub fn try_len(&self) -> Result<usize> {
+        let mut n = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { sys::o3d_pointcloud_size(self.as_raw(), &mut n) })?;
+        Ok(n)
+    }
+
+    /// Number of points. Panics if the library refuses (it only does for a NULL handle).
+    pub fn len(&self) -> usize {
+        self.try_len().unwrap_or_else(|e| panic!("o3d_pointcloud_size failed: {e}"))
+    }
+
+    /// True when the cloud has no points.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    fn flag(&self, f: FlagFn) -> Result<bool> {
+        let mut v = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { f(self.as_raw(), &mut v) })?;
+        Ok(v != 0)
+    }
+
+    /// True if the cloud has points.
+    pub fn has_points(&self) -> Result<bool> {
+        self.flag(sys::o3d_pointcloud_has_points)
+    }
+
+    /// True if the cloud has one normal per point.
+    pub fn has_normals(&self) -> Result<bool> {
+        self.flag(sys::o3d_pointcloud_has_normals)
+    }
+
+    /// True if the cloud has one color per point.
+    pub fn has_colors(&self) -> Result<bool> {
+        self.flag(sys::o3d_pointcloud_has_colors)
+    }
+
+    /// Remove points, normals and colors.
+    pub fn clear(&mut self) -> Result<()> {
+        // SAFETY: valid handle, exclusively borrowed.
+        check(unsafe { sys::o3d_pointcloud_clear(self.raw_mut()) })
+    }
+
+    fn set(&mut self, f: SetFn, rows: &[[f64; 3]]) -> Result<()> {
+        // SAFETY: rows.len() rows of 3 contiguous doubles; copied by the library.
+        check(unsafe { f(self.raw_mut(), flat(rows), rows.len()) })
+    }
+
+    fn set_f32(&mut self, f: SetF32Fn, rows: &[[f32; 3]]) -> Result<()> {
+        // SAFETY: rows.len() rows of 3 contiguous floats; copied by the library.
+        check(unsafe { f(self.raw_mut(), flat(rows), rows.len()) })
+    }
+
+    /// Replace the points (copied once). Normals and colors are kept as they are.
+    pub fn set_points(&mut self, points: &[[f64; 3]]) -> Result<()> {
+        self.set(sys::o3d_pointcloud_set_points, points)
+    }
+
+    /// Replace the points from float32 input (converted in the single copy).
+    pub fn set_points_f32(&mut self, points: &[[f32; 3]]) -> Result<()> {
+        self.set_f32(sys::o3d_pointcloud_set_points_f32, points)
+    }
+
+    /// Replace the normals.
+    pub fn set_normals(&mut self, normals: &[[f64; 3]]) -> Result<()> {
+        self.set(sys::o3d_pointcloud_set_normals, normals)
+    }
+
+    /// Replace the normals from float32 input.
+    pub fn set_normals_f32(&mut self, normals: &[[f32; 3]]) -> Result<()> {
+        self.set_f32(sys::o3d_pointcloud_set_normals_f32, normals)
+    }
+
+    /// Replace the colors (RGB in [0,1]).
+    pub fn set_colors(&mut self, colors: &[[f64; 3]]) -> Result<()> {
+        self.set(sys::o3d_pointcloud_set_colors, colors)
+    }
+
+    /// Replace the colors from float32 input.
+    pub fn set_colors_f32(&mut self, colors: &[[f32; 3]]) -> Result<()> {
+        self.set_f32(sys::o3d_pointcloud_set_colors_f32, colors)
+    }
+
+    fn view(&self, f: ViewFn) -> Result<&[[f64; 3]]> {
+        let mut data = ptr::null();
+        let mut n = 0;
+        // SAFETY: valid handle and out-pointers.
+        check(unsafe { f(self.as_raw(), &mut data, &mut n) })?;
+        if n == 0 || data.is_null() {
+            return Ok(&[]);
+        }
+        // SAFETY: n rows of 3 doubles (align 8), valid until the next mutation of the cloud, which
+        // needs `&mut self` and so ends this borrow first.
+        Ok(unsafe { slice::from_raw_parts(data.cast::<[f64; 3]>(), n) })
+    }
+
+    fn view_mut(&mut self, f: MutViewFn) -> Result<&mut [[f64; 3]]> {
+        let mut data = ptr::null_mut();
+        let mut n = 0;
+        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
+        check(unsafe { f(self.raw_mut(), &mut data, &mut n) })?;
+        if n == 0 || data.is_null() {
+            return Ok(&mut []);
+        }
+        // SAFETY: as `view`, and unique because `self` is borrowed mutably for the slice's life.
+        Ok(unsafe { slice::from_raw_parts_mut(data.cast::<[f64; 3]>(), n) })
+    }
+
+    /// Zero-copy view of the points, borrowed from the cloud.
+    pub fn try_points(&self) -> Result<&[[f64; 3]]> {
+        self.view(sys::o3d_pointcloud_points_view)
+    }
+
+    /// Zero-copy view of the normals (empty when the cloud has none).
+    pub fn try_normals(&self) -> Result<&[[f64; 3]]> {
+        self.view(sys::o3d_pointcloud_normals_view)
+    }
+
+    /// Zero-copy view of the colors (empty when the cloud has none).
+    pub fn try_colors(&self) -> Result<&[[f64; 3]]> {
+        self.view(sys::o3d_pointcloud_colors_view)
+    }
+
+    /// Zero-copy view of the points. Panics if the library refuses (see [`Self::try_points`]).
+    pub fn points(&self) -> &[[f64; 3]] {
+        self.try_points().unwrap_or_else(|e| panic!("o3d_pointcloud_points_view failed: {e}"))
+    }
+
+    /// Zero-copy view of the normals. Panics if the library refuses.
+    pub fn normals(&self) -> &[[f64; 3]] {
+        self.try_normals().unwrap_or_else(|e| panic!("o3d_pointcloud_normals_view failed: {e}"))
+    }
+
+    /// Zero-copy view of the colors. Panics if the library refuses.
+    pub fn colors(&self) -> &[[f64; 3]] {
+        self.try_colors().unwrap_or_else(|e| panic!("o3d_pointcloud_colors_view failed: {e}"))
+    }
+
+    /// Writable zero-copy view of the points, for in-place edits.
+    pub fn try_points_mut(&mut self) -> Result<&mut [[f64; 3]]> {
+        self.view_mut(sys::o3d_pointcloud_points_mutable_view)
+    }
+
+    /// Writable zero-copy view of the normals.
+    pub fn try_normals_mut(&mut self) -> Result<&mut [[f64; 3]]> {
+        self.view_mut(sys::o3d_pointcloud_normals_mutable_view)
+    }
+
+    /// Writable zero-copy view of the colors.
+    pub fn try_colors_mut(&mut self) -> Result<&mut [[f64; 3]]> {
+        self.view_mut(sys::o3d_pointcloud_colors_mutable_view)
+    }
+
+    /// Writable zero-copy view of the points. Panics if the library refuses.
+    pub fn points_mut(&mut self) -> &mut [[f64; 3]] {
+        self.try_points_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_points_mutable_view failed: {e}"))
+    }
+
+    /// Writable zero-copy view of the normals. Panics if the library refuses.
+    pub fn normals_mut(&mut self) -> &mut [[f64; 3]] {
+        self.try_normals_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_normals_mutable_view failed: {e}"))
+    }
+
+    /// Writable zero-copy view of the colors. Panics if the library refuses.
+    pub fn colors_mut(&mut self) -> &mut [[f64; 3]] {
+        self.try_colors_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_colors_mutable_view failed: {e}"))
+    }
+
+    fn get(&self, f: GetFn) -> Result<Vec<[f64; 3]>> {
+        // SAFETY: `out` has room for `cap` rows of 3 doubles (or is NULL for the count query).
+        copy_out::<[f64; 3]>(|out, cap, n| unsafe { f(self.as_raw(), out.cast(), cap, n) })
+    }
+
+    /// Copy of the points (`o3d_pointcloud_get_points`).
+    pub fn points_to_vec(&self) -> Result<Vec<[f64; 3]>> {
+        self.get(sys::o3d_pointcloud_get_points)
+    }
+
+    /// Copy of the normals.
+    pub fn normals_to_vec(&self) -> Result<Vec<[f64; 3]>> {
+        self.get(sys::o3d_pointcloud_get_normals)
+    }
+
+    /// Copy of the colors.
+    pub fn colors_to_vec(&self) -> Result<Vec<[f64; 3]>> {
+        self.get(sys::o3d_pointcloud_get_colors)
+    }
+
+    /// Concatenate `other` onto `self` (Open3D `pcd += other`).
+    pub fn append(&mut self, other: &PointCloud) -> Result<()> {
+        // SAFETY: two valid handles; `self` is exclusive so they differ.
+        check(unsafe { sys::o3d_pointcloud_append(self.raw_mut(), other.as_raw()) })
+    }
+
+    /// Apply a row-major 4x4 transform to the points (and rotate the normals).
+    pub fn transform(&mut self, transformation: &[[f64; 4]; 4]) -> Result<&mut Self> {
+        // SAFETY: 16 contiguous doubles.
+        check(unsafe { sys::o3d_pointcloud_transform(self.raw_mut(), transformation.as_ptr().cast()) })?;
+        Ok(self)
+    }
+
+    /// `relative`: add `translation`; otherwise move the center to `translation`.
+    pub fn translate(&mut self, translation: [f64; 3], relative: bool) -> Result<&mut Self> {
+        // SAFETY: 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_translate(self.raw_mut(), translation.as_ptr(), relative as i32) })?;
+        Ok(self)
+    }
+
+    /// Rotate by the row-major 3x3 `rotation` about `center` (`None`: the cloud's center).
+    pub fn rotate(&mut self, rotation: &[[f64; 3]; 3], center: Option<[f64; 3]>) -> Result<&mut Self> {
+        // SAFETY: 9 contiguous doubles; center NULL or 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_rotate(self.raw_mut(), rotation.as_ptr().cast(), opt_ptr(&center)) })?;
+        Ok(self)
+    }
+
+    /// Scale about `center` (`None`: the cloud's center).
+    pub fn scale(&mut self, scale: f64, center: Option<[f64; 3]>) -> Result<&mut Self> {
+        // SAFETY: center NULL or 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_scale(self.raw_mut(), scale, opt_ptr(&center)) })?;
+        Ok(self)
+    }
+
+    fn vec3(&self, f: unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64) -> sys::o3d_status) -> Result<[f64; 3]> {
+        let mut out = [0.0; 3];
+        // SAFETY: room for 3 doubles.
+        check(unsafe { f(self.as_raw(), out.as_mut_ptr()) })?;
+        Ok(out)
+    }
+
+    /// Component-wise minimum of the points ((0,0,0) when empty).
+    pub fn get_min_bound(&self) -> Result<[f64; 3]> {
+        self.vec3(sys::o3d_pointcloud_get_min_bound)
+    }
+
+    /// Component-wise maximum of the points ((0,0,0) when empty).
+    pub fn get_max_bound(&self) -> Result<[f64; 3]> {
+        self.vec3(sys::o3d_pointcloud_get_max_bound)
+    }
+
+    /// Mean of the points ((0,0,0) when empty).
+    pub fn get_center(&self) -> Result<[f64; 3]> {
+        self.vec3(sys::o3d_pointcloud_get_center)
+    }
+
+    /// Axis-aligned bounding box as (min corner, max corner).
+    pub fn get_axis_aligned_bounding_box(&self) -> Result<([f64; 3], [f64; 3])> {
+        let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
+        // SAFETY: room for 3 + 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_get_axis_aligned_bounding_box(self.as_raw(), lo.as_mut_ptr(), hi.as_mut_ptr()) })?;
+        Ok((lo, hi))
+    }
+
+    /// Set every color to `rgb` (each in [0,1]).
+    pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
+        // SAFETY: 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
+        Ok(self)
+    }
+
+    /// New cloud with the points at `indices` (or all others when `invert`). Out of range → Err.
+    pub fn select_by_index(&self, indices: &[i32], invert: bool) -> Result<PointCloud> {
+        // SAFETY: indices.len() ints.
+        new_cloud(|out| unsafe {
+            sys::o3d_pointcloud_select_by_index(out, self.as_raw(), indices.as_ptr(), indices.len(), invert as i32)
+        })
+    }
+
+    /// Drop points with a NaN (`remove_nan`) or an infinite (`remove_infinite`) coordinate.
+    pub fn remove_non_finite_points(&mut self, remove_nan: bool, remove_infinite: bool) -> Result<&mut Self> {
+        // SAFETY: valid handle.
+        check(unsafe {
+            sys::o3d_pointcloud_remove_non_finite_points(self.raw_mut(), remove_nan as i32, remove_infinite as i32)
+        })?;
+        Ok(self)
+    }
+
+    /// Scale every normal to unit length.
+    pub fn normalize_normals(&mut self) -> Result<&mut Self> {
+        // SAFETY: valid handle.
+        check(unsafe { sys::o3d_pointcloud_normalize_normals(self.raw_mut()) })?;
+        Ok(self)
+    }
+
+    /// Average points (normals, colors) per voxel of edge `voxel_size` > 0.
+    pub fn voxel_down_sample(&self, voxel_size: f64) -> Result<PointCloud> {
+        // SAFETY: valid handle.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_voxel_down_sample(out, self.as_raw(), voxel_size) })
+    }
+
+    /// Keep points 0, k, 2k, ... (`every_k_points` >= 1).
+    pub fn uniform_down_sample(&self, every_k_points: usize) -> Result<PointCloud> {
+        // SAFETY: valid handle.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_uniform_down_sample(out, self.as_raw(), every_k_points) })
+    }
+
+    /// Keep round(ratio * N) random points, in their original order; same seed → same output.
+    pub fn random_down_sample(&self, sampling_ratio: f64, seed: u64) -> Result<PointCloud> {
+        // SAFETY: valid handle.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_random_down_sample(out, self.as_raw(), sampling_ratio, seed) })
+    }
+
+    /// Farthest-point sampling of `num_samples` points, starting at `start_index`.
+    pub fn farthest_point_down_sample(&self, num_samples: usize, start_index: usize) -> Result<PointCloud> {
+        // SAFETY: valid handle.
+        new_cloud(|out| unsafe {
+            sys::o3d_pointcloud_farthest_point_down_sample(out, self.as_raw(), num_samples, start_index)
+        })
+    }
+
+    /// PCA normals over each point's neighbourhood. Existing normals orient the new ones.
+    /// Uses the library's default thread count ([`crate::set_num_threads`]).
+    pub fn estimate_normals(&mut self, param: SearchParam) -> Result<&mut Self> {
+        let raw = param.to_raw()?;
+        // SAFETY: valid handle and parameter struct.
+        check(unsafe { sys::o3d_pointcloud_estimate_normals(self.raw_mut(), &raw, 0) })?;
+        Ok(self)
+    }
+
+    /// Flip normals to have a non-negative dot product with `direction` (Open3D default: +Z).
+    pub fn orient_normals_to_align_with_direction(&mut self, direction: [f64; 3]) -> Result<&mut Self> {
+        // SAFETY: 3 doubles.
+        check(unsafe { sys::o3d_pointcloud_orient_normals_to_align_with_direction(self.raw_mut(), direction.as_ptr()) })?;
+        Ok(self)
+    }
+
+    /// Flip normals to point towards `camera_location` (Open3D default: the origin).
+    pub fn orient_normals_towards_camera_location(&mut self, camera_location: [f64; 3]) -> Result<&mut Self> {
+        // SAFETY: 3 doubles.
+        check(unsafe {
+            sys::o3d_pointcloud_orient_normals_towards_camera_location(self.raw_mut(), camera_location.as_ptr())
+        })?;
+        Ok(self)
+    }
+
+    /// Distance from each point to its nearest other point.
+    pub fn compute_nearest_neighbor_distance(&self) -> Result<Vec<f64>> {
+        // SAFETY: `out` has room for `cap` doubles or is NULL.
+        copy_out::<f64>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_compute_nearest_neighbor_distance(self.as_raw(), out, cap, n, 0)
+        })
+    }
+
+    /// For each point of `self`, the distance to the closest point of `target`.
+    pub fn compute_point_cloud_distance(&self, target: &PointCloud) -> Result<Vec<f64>> {
+        // SAFETY: `out` has room for `cap` doubles or is NULL.
+        copy_out::<f64>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_compute_point_cloud_distance(self.as_raw(), target.as_raw(), out, cap, n, 0)
+        })
+    }
+}
+
+impl Drop for PointCloud {
+    fn drop(&mut self) {
+        // SAFETY: owned handle, destroyed once.
+        unsafe { sys::o3d_pointcloud_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl Clone for PointCloud {
+    /// Deep copy. Panics if the library cannot copy (out of memory); see [`PointCloud::try_clone`].
+    fn clone(&self) -> Self {
+        self.try_clone().unwrap_or_else(|e| panic!("o3d_pointcloud_clone failed: {e}"))
+    }
+}
+
+impl fmt::Debug for PointCloud {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("PointCloud")
+            .field("points", &self.try_len().unwrap_or(0))
+            .field("has_normals", &self.has_normals().unwrap_or(false))
+            .field("has_colors", &self.has_colors().unwrap_or(false))
+            .finish()
+    }
+}

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+// Format dispatch, file <-> memory, and the read options that apply to every format.
+#include "o3d/io/point_cloud_io.h"
+
+#include <cmath>
+#include <string_view>
+
+#include "o3d/io/file_bytes.h"
+#include "o3d/io/io_internal.h"
+#include "o3d/utility/error.h"
+
+namespace o3d::io {
+namespace detail {
+
+void parse_error(const Input& in, const std::string& reason) { throw ParseError(in.name + ": " + reason); }
+
+}  // namespace detail
+
+namespace {
+
+enum class Format { Ply, Pcd, Xyz, Xyzn, Xyzrgb, Pts };
+
+constexpr const char* kKnownFormats = "ply, pcd, xyz, xyzn, xyzrgb, pts";
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return out;
+}
+
+bool is_auto(const std::string& format) { return format.empty() || lower(format) == "auto"; }
+
+bool format_from_name(const std::string& name, Format& out) {
+    const std::string n = lower(name);
+    if (n == "ply") out = Format::Ply;
+    else if (n == "pcd") out = Format::Pcd;
+    else if (n == "xyz") out = Format::Xyz;
+    else if (n == "xyzn") out = Format::Xyzn;
+    else if (n == "xyzrgb") out = Format::Xyzrgb;
+    else if (n == "pts") out = Format::Pts;
+    else return false;
+    return true;
+}
+
+Format resolve(const std::string& format, const std::string* path) {
+    Format f;
+    if (!is_auto(format)) {
+        if (!format_from_name(format, f))
+            throw Unsupported("unknown point-cloud format '" + format + "' (known: " + kKnownFormats + ")");
+        return f;
+    }
+    if (!path) throw InvalidArgument("a format is required for in-memory data (known: " + std::string(kKnownFormats) + ")");
+    const size_t slash = path->find_last_of('/');
+    const size_t dot = path->find_last_of('.');
+    const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    const std::string ext = has_ext ? path->substr(dot + 1) : std::string();
+    if (!format_from_name(ext, f))
+        throw Unsupported("cannot tell the point-cloud format of '" + *path + "' from its extension" +
+                          (has_ext ? " '." + ext + "'" : std::string(" (it has none)")) + " (known: " + kKnownFormats +
+                          ")");
+    return f;
+}
+
+geometry::PointCloud parse(Format f, const detail::Input& in) {
+    switch (f) {
+        case Format::Ply: return detail::read_ply(in);
+        case Format::Pcd: return detail::read_pcd(in);
+        case Format::Xyz: return detail::read_xyz(in);
+        case Format::Xyzn: return detail::read_xyzn(in);
+        case Format::Xyzrgb: return detail::read_xyzrgb(in);
+        case Format::Pts: return detail::read_pts(in);
+    }
+    throw Unsupported("unknown point-cloud format");
+}
+
+std::vector<uint8_t> encode(Format f, const geometry::PointCloud& cloud, const WriteOptions& options) {
+    switch (f) {
+        case Format::Ply: return detail::write_ply(cloud, options);
+        case Format::Pcd: return detail::write_pcd(cloud, options);
+        case Format::Xyz: return detail::write_xyz(cloud);
+        case Format::Xyzn: return detail::write_xyzn(cloud);
+        case Format::Xyzrgb: return detail::write_xyzrgb(cloud);
+        case Format::Pts: return detail::write_pts(cloud);
+    }
+    throw Unsupported("unknown point-cloud format");
+}
+
+/// @brief Open3D's RemoveNonFinitePoints: drop a point (and its normal and colour) whose
+/// coordinates hold a NaN or an infinity, as the options ask.
+void remove_non_finite(geometry::PointCloud& cloud, const ReadOptions& options) {
+    if (!options.remove_nan_points && !options.remove_infinite_points) return;
+    const bool normals = cloud.has_normals();
+    const bool colors = cloud.has_colors();
+    size_t kept = 0;
+    for (size_t i = 0; i < cloud.points.size(); ++i) {
+        const Eigen::Vector3d& p = cloud.points[i];
+        const bool nan = std::isnan(p.x()) || std::isnan(p.y()) || std::isnan(p.z());
+        const bool inf = std::isinf(p.x()) || std::isinf(p.y()) || std::isinf(p.z());
+        if ((options.remove_nan_points && nan) || (options.remove_infinite_points && inf)) continue;
+        if (kept != i) {
+            cloud.points[kept] = p;
+            if (normals) cloud.normals[kept] = cloud.normals[i];
+            if (colors) cloud.colors[kept] = cloud.colors[i];
+        }
+        ++kept;
+    }
+    cloud.points.resize(kept);
+    if (normals) cloud.normals.resize(kept);
+    if (colors) cloud.colors.resize(kept);
+}
+
+}  // namespace
+
+geometry::PointCloud read_point_cloud(const std::string& path, const std::string& format, const ReadOptions& options) {
+    const Format f = resolve(format, &path);
+    const detail::FileBytes bytes(path);
+    static const uint8_t kEmpty = 0;
+    const detail::Input in{bytes.size() ? bytes.data() : &kEmpty, bytes.size(), path};
+    geometry::PointCloud cloud = parse(f, in);
+    remove_non_finite(cloud, options);
+    return cloud;
+}
+
+geometry::PointCloud read_point_cloud_from_memory(const uint8_t* data, size_t size, const std::string& format,
+                                                  const ReadOptions& options) {
+    const Format f = resolve(format, nullptr);
+    if (!data && size) throw InvalidArgument("data is NULL but size is " + std::to_string(size));
+    static const uint8_t kEmpty = 0;
+    static const std::string kMemory = "<memory>";
+    const detail::Input in{data ? data : &kEmpty, data ? size : 0, kMemory};
+    geometry::PointCloud cloud = parse(f, in);
+    remove_non_finite(cloud, options);
+    return cloud;
+}
+
+void write_point_cloud(const std::string& path, const geometry::PointCloud& cloud, const std::string& format,
+                       const WriteOptions& options) {
+    const Format f = resolve(format, &path);
+    detail::write_file(path, encode(f, cloud, options));
+}
+
+std::vector<uint8_t> write_point_cloud_to_memory(const geometry::PointCloud& cloud, const std::string& format,
+                                                 const WriteOptions& options) {
+    return encode(resolve(format, nullptr), cloud, options);
+}
+
+}  // namespace o3d::io

@@ -75,6 +75,13 @@ void view_rows(const Vec3List& src, Ptr* out_data, size_t* out_n) {
     *out_n = src.size();
 }
 
+void write3(double* out, const char* name, const Eigen::Vector3d& v) {
+    require(out, name);
+    out[0] = v.x();
+    out[1] = v.y();
+    out[2] = v.z();
+}
+
 Eigen::Vector3d vec3(const double* v, const char* name) {
     require(v, name);
     return Eigen::Vector3d(v[0], v[1], v[2]);
@@ -268,21 +275,21 @@ O3D_API o3d_status o3d_pointcloud_scale(o3d_pointcloud_t* pc, double scale, cons
 O3D_API o3d_status o3d_pointcloud_get_min_bound(const o3d_pointcloud_t* pc, double out[3]) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
-        Eigen::Map<Eigen::Vector3d>(require(out, "out")) = o3d::geometry::min_bound(c);
+        write3(out, "out", o3d::geometry::min_bound(c));
     });
 }
 
 O3D_API o3d_status o3d_pointcloud_get_max_bound(const o3d_pointcloud_t* pc, double out[3]) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
-        Eigen::Map<Eigen::Vector3d>(require(out, "out")) = o3d::geometry::max_bound(c);
+        write3(out, "out", o3d::geometry::max_bound(c));
     });
 }
 
 O3D_API o3d_status o3d_pointcloud_get_center(const o3d_pointcloud_t* pc, double out[3]) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
-        Eigen::Map<Eigen::Vector3d>(require(out, "out")) = o3d::geometry::center(c);
+        write3(out, "out", o3d::geometry::center(c));
     });
 }
 
@@ -292,8 +299,8 @@ O3D_API o3d_status o3d_pointcloud_get_axis_aligned_bounding_box(const o3d_pointc
         const PointCloud& c = cloud_of(pc);
         require(out_min, "out_min");
         require(out_max, "out_max");
-        Eigen::Map<Eigen::Vector3d>(out_min) = o3d::geometry::min_bound(c);
-        Eigen::Map<Eigen::Vector3d>(out_max) = o3d::geometry::max_bound(c);
+        write3(out_min, "out_min", o3d::geometry::min_bound(c));
+        write3(out_max, "out_max", o3d::geometry::max_bound(c));
     });
 }
 

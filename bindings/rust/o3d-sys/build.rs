@@ -18,13 +18,9 @@ fn main() {
     println!("cargo:rerun-if-env-changed=O3D_INCLUDE_DIR");
     println!("cargo:rerun-if-changed=build.rs");
 
-    let lib_dir = env::var_os("O3D_LIB_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| repo.join("build/capi"));
+    let lib_dir = env::var_os("O3D_LIB_DIR").map(PathBuf::from).unwrap_or_else(|| repo.join("build/capi"));
     let lib_dir = lib_dir.canonicalize().unwrap_or(lib_dir);
-    let include_dir = env::var_os("O3D_INCLUDE_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| repo.join("capi/include"));
+    let include_dir = env::var_os("O3D_INCLUDE_DIR").map(PathBuf::from).unwrap_or_else(|| repo.join("capi/include"));
     let include_dir = include_dir.canonicalize().unwrap_or(include_dir);
 
     for header in ["o3d.h", "common.h", "pointcloud.h", "kdtree.h", "io.h", "registration.h"] {

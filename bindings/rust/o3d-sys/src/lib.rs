@@ -41,12 +41,10 @@ pub const O3D_LOG_INFO: i32 = 2;
 pub const O3D_LOG_DEBUG: i32 = 3;
 
 /// `typedef void (*o3d_log_callback)(int32_t level, const char* message, void* user_data);`
-pub type o3d_log_callback =
-    Option<unsafe extern "C" fn(level: i32, message: *const c_char, user_data: *mut c_void)>;
+pub type o3d_log_callback = Option<unsafe extern "C" fn(level: i32, message: *const c_char, user_data: *mut c_void)>;
 
 /// `typedef int32_t (*o3d_progress_callback)(double fraction, void* user_data);`
-pub type o3d_progress_callback =
-    Option<unsafe extern "C" fn(fraction: f64, user_data: *mut c_void) -> i32>;
+pub type o3d_progress_callback = Option<unsafe extern "C" fn(fraction: f64, user_data: *mut c_void) -> i32>;
 
 /// Opaque owned byte buffer (`o3d_buffer_t`).
 #[repr(C)]
@@ -75,8 +73,7 @@ extern "C" {
     pub fn o3d_get_num_threads() -> i32;
 
     pub fn o3d_buffer_destroy(buffer: *mut o3d_buffer_t);
-    pub fn o3d_buffer_view(buffer: *const o3d_buffer_t, out_data: *mut *const u8, out_size: *mut usize)
-        -> o3d_status;
+    pub fn o3d_buffer_view(buffer: *const o3d_buffer_t, out_data: *mut *const u8, out_size: *mut usize) -> o3d_status;
     pub fn o3d_buffer_get_data(
         buffer: *const o3d_buffer_t,
         out: *mut u8,
@@ -183,10 +180,8 @@ extern "C" {
     pub fn o3d_pointcloud_append(pc: *mut o3d_pointcloud_t, other: *const o3d_pointcloud_t) -> o3d_status;
 
     pub fn o3d_pointcloud_transform(pc: *mut o3d_pointcloud_t, transform: *const f64) -> o3d_status;
-    pub fn o3d_pointcloud_translate(pc: *mut o3d_pointcloud_t, translation: *const f64, relative: i32)
-        -> o3d_status;
-    pub fn o3d_pointcloud_rotate(pc: *mut o3d_pointcloud_t, rotation: *const f64, center: *const f64)
-        -> o3d_status;
+    pub fn o3d_pointcloud_translate(pc: *mut o3d_pointcloud_t, translation: *const f64, relative: i32) -> o3d_status;
+    pub fn o3d_pointcloud_rotate(pc: *mut o3d_pointcloud_t, rotation: *const f64, center: *const f64) -> o3d_status;
     pub fn o3d_pointcloud_scale(pc: *mut o3d_pointcloud_t, scale: f64, center: *const f64) -> o3d_status;
 
     pub fn o3d_pointcloud_get_min_bound(pc: *const o3d_pointcloud_t, out: *mut f64) -> o3d_status;
@@ -288,8 +283,7 @@ pub struct o3d_search_result {
 pub type o3d_search_result_t = o3d_search_result;
 
 extern "C" {
-    pub fn o3d_kdtree_create_from_pointcloud(out: *mut *mut o3d_kdtree_t, pc: *const o3d_pointcloud_t)
-        -> o3d_status;
+    pub fn o3d_kdtree_create_from_pointcloud(out: *mut *mut o3d_kdtree_t, pc: *const o3d_pointcloud_t) -> o3d_status;
     pub fn o3d_kdtree_create_from_points(out: *mut *mut o3d_kdtree_t, xyz: *const f64, n: usize) -> o3d_status;
     pub fn o3d_kdtree_destroy(tree: *mut o3d_kdtree_t);
     pub fn o3d_kdtree_size(tree: *const o3d_kdtree_t, out_n: *mut usize) -> o3d_status;
@@ -323,10 +317,16 @@ extern "C" {
         out_indices: *mut *const i32,
         out_distances2: *mut *const f64,
     ) -> o3d_status;
-    pub fn o3d_search_result_get_offsets(result: *const o3d_search_result_t, out: *mut i64, capacity: usize)
-        -> o3d_status;
-    pub fn o3d_search_result_get_indices(result: *const o3d_search_result_t, out: *mut i32, capacity: usize)
-        -> o3d_status;
+    pub fn o3d_search_result_get_offsets(
+        result: *const o3d_search_result_t,
+        out: *mut i64,
+        capacity: usize,
+    ) -> o3d_status;
+    pub fn o3d_search_result_get_indices(
+        result: *const o3d_search_result_t,
+        out: *mut i32,
+        capacity: usize,
+    ) -> o3d_status;
     pub fn o3d_search_result_get_distances2(
         result: *const o3d_search_result_t,
         out: *mut f64,
@@ -451,8 +451,7 @@ extern "C" {
         result: *const o3d_registration_result_t,
         out: *mut f64,
     ) -> o3d_status;
-    pub fn o3d_registration_result_get_fitness(result: *const o3d_registration_result_t, out: *mut f64)
-        -> o3d_status;
+    pub fn o3d_registration_result_get_fitness(result: *const o3d_registration_result_t, out: *mut f64) -> o3d_status;
     pub fn o3d_registration_result_get_inlier_rmse(
         result: *const o3d_registration_result_t,
         out: *mut f64,

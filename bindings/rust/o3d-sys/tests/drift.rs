@@ -57,11 +57,7 @@ fn header_functions() -> BTreeSet<String> {
     let mut names = BTreeSet::new();
     for (_, text) in headers() {
         // Preprocessor lines (`#define O3D_API __attribute__(...)`) are not declarations.
-        let flat: String = text
-            .lines()
-            .filter(|l| !l.trim_start().starts_with('#'))
-            .collect::<Vec<_>>()
-            .join(" ");
+        let flat: String = text.lines().filter(|l| !l.trim_start().starts_with('#')).collect::<Vec<_>>().join(" ");
         for (pos, _) in flat.match_indices("O3D_API ") {
             let decl = &flat[pos..];
             let paren = decl.find('(').unwrap();
@@ -114,9 +110,8 @@ fn every_header_constant_is_declared_with_its_value() {
             let Some(value) = parts.next().and_then(parse_int) else { continue }; // macros, guards
             count += 1;
             let needle = format!("pub const {name}: ");
-            let pos = SOURCE
-                .find(&needle)
-                .unwrap_or_else(|| panic!("{file}: constant {name} is not declared in o3d-sys"));
+            let pos =
+                SOURCE.find(&needle).unwrap_or_else(|| panic!("{file}: constant {name} is not declared in o3d-sys"));
             let decl = &SOURCE[pos..];
             let decl = &decl[..decl.find(';').unwrap()];
             let rust_value = parse_int(&decl[decl.find('=').unwrap() + 1..]).unwrap();

@@ -73,13 +73,7 @@ fn c_layout() -> Option<Vec<(String, usize)>> {
     let exe = dir.join("layout");
     std::fs::write(&c_file, src).unwrap();
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
-    let compiled = Command::new(&cc)
-        .args(["-std=c11", "-I"])
-        .arg(&include)
-        .arg(&c_file)
-        .arg("-o")
-        .arg(&exe)
-        .status();
+    let compiled = Command::new(&cc).args(["-std=c11", "-I"]).arg(&include).arg(&c_file).arg("-o").arg(&exe).status();
     match compiled {
         Ok(s) if s.success() => {}
         Ok(s) => panic!("{cc} failed ({s}) on the layout probe: do the headers still compile as C11?"),

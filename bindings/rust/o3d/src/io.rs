@@ -63,9 +63,9 @@ fn c_string(what: &str, s: &str) -> Result<CString> {
 }
 
 fn c_path(path: &Path) -> Result<CString> {
-    let s = path.to_str().ok_or_else(|| {
-        Error::new(ErrorCode::InvalidArgument, format!("path {} is not valid UTF-8", path.display()))
-    })?;
+    let s = path
+        .to_str()
+        .ok_or_else(|| Error::new(ErrorCode::InvalidArgument, format!("path {} is not valid UTF-8", path.display())))?;
     c_string("path", s)
 }
 
@@ -79,7 +79,12 @@ pub fn read_point_cloud(path: impl AsRef<Path>, format: &str, options: &ReadOpti
 }
 
 /// Write `cloud` to `path` (`format`: `"auto"` for the extension).
-pub fn write_point_cloud(path: impl AsRef<Path>, cloud: &PointCloud, format: &str, options: &WriteOptions) -> Result<()> {
+pub fn write_point_cloud(
+    path: impl AsRef<Path>,
+    cloud: &PointCloud,
+    format: &str,
+    options: &WriteOptions,
+) -> Result<()> {
     let path = c_path(path.as_ref())?;
     let format = c_string("format", format)?;
     let opts = options.to_raw()?;
@@ -122,7 +127,9 @@ impl Buffer {
     /// Copy of the bytes (`o3d_buffer_get_data`).
     pub fn to_vec(&self) -> Result<Vec<u8>> {
         // SAFETY: `out` has room for `cap` bytes or is NULL.
-        crate::pointcloud::copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_buffer_get_data(self.raw.as_ptr(), out, cap, n) })
+        crate::pointcloud::copy_out::<u8>(|out, cap, n| unsafe {
+            sys::o3d_buffer_get_data(self.raw.as_ptr(), out, cap, n)
+        })
     }
 }
 

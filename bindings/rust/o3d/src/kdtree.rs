@@ -143,6 +143,11 @@ impl KDTreeFlann {
         Ok(n)
     }
 
+    /// True when the tree indexes no points.
+    pub fn is_empty(&self) -> Result<bool> {
+        Ok(self.len()? == 0)
+    }
+
     /// Search every row of `queries` at once (in parallel), keeping the result in the library.
     pub fn search_ref(&self, queries: &[[f64; 3]], param: SearchParam) -> Result<SearchResultRef> {
         let p = param.to_raw()?;

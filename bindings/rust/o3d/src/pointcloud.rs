@@ -46,7 +46,8 @@ impl SearchParam {
         // SAFETY: zeroed then filled by init; every bit pattern is valid for these fields.
         let mut raw = unsafe { raw.assume_init() };
         let count = |n: usize| {
-            i32::try_from(n).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("neighbour count {n} is too large")))
+            i32::try_from(n)
+                .map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("neighbour count {n} is too large")))
         };
         match self {
             SearchParam::Knn { knn } => {
@@ -67,7 +68,7 @@ impl SearchParam {
     }
 }
 
-/// A point cloud: points, and optionally one normal and one color (RGB in [0,1]) per point.
+/// A point cloud: points, and optionally one normal and one color (RGB in `[0, 1]`) per point.
 ///
 /// Owns an `o3d_pointcloud_t`. `Send` and `Sync`: `&self` methods only read (the C API allows
 /// concurrent `const` calls), every mutation takes `&mut self`.
@@ -230,7 +231,7 @@ impl PointCloud {
         self.set_f32(sys::o3d_pointcloud_set_normals_f32, normals)
     }
 
-    /// Replace the colors (RGB in [0,1]).
+    /// Replace the colors (RGB in `[0, 1]`).
     pub fn set_colors(&mut self, colors: &[[f64; 3]]) -> Result<()> {
         self.set(sys::o3d_pointcloud_set_colors, colors)
     }
@@ -379,7 +380,10 @@ impl PointCloud {
         Ok(self)
     }
 
-    fn vec3(&self, f: unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64) -> sys::o3d_status) -> Result<[f64; 3]> {
+    fn vec3(
+        &self,
+        f: unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64) -> sys::o3d_status,
+    ) -> Result<[f64; 3]> {
         let mut out = [0.0; 3];
         // SAFETY: room for 3 doubles.
         check(unsafe { f(self.as_raw(), out.as_mut_ptr()) })?;
@@ -405,11 +409,13 @@ impl PointCloud {
     pub fn get_axis_aligned_bounding_box(&self) -> Result<([f64; 3], [f64; 3])> {
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         // SAFETY: room for 3 + 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_get_axis_aligned_bounding_box(self.as_raw(), lo.as_mut_ptr(), hi.as_mut_ptr()) })?;
+        check(unsafe {
+            sys::o3d_pointcloud_get_axis_aligned_bounding_box(self.as_raw(), lo.as_mut_ptr(), hi.as_mut_ptr())
+        })?;
         Ok((lo, hi))
     }
 
-    /// Set every color to `rgb` (each in [0,1]).
+    /// Set every color to `rgb` (each in `[0, 1]`).
     pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
         // SAFETY: 3 doubles.
         check(unsafe { sys::o3d_pointcloud_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
@@ -478,7 +484,9 @@ impl PointCloud {
     /// Flip normals to have a non-negative dot product with `direction` (Open3D default: +Z).
     pub fn orient_normals_to_align_with_direction(&mut self, direction: [f64; 3]) -> Result<&mut Self> {
         // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_orient_normals_to_align_with_direction(self.raw_mut(), direction.as_ptr()) })?;
+        check(unsafe {
+            sys::o3d_pointcloud_orient_normals_to_align_with_direction(self.raw_mut(), direction.as_ptr())
+        })?;
         Ok(self)
     }
 

@@ -11,7 +11,8 @@ use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{copy_out, PointCloud};
 
 /// The 4x4 identity.
-pub const IDENTITY: [[f64; 4]; 4] = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+pub const IDENTITY: [[f64; 4]; 4] =
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
 /// Transformation estimation method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -121,7 +122,9 @@ impl Drop for RawResult {
     }
 }
 
-fn read_result(f: impl FnOnce(*mut *mut sys::o3d_registration_result_t) -> sys::o3d_status) -> Result<RegistrationResult> {
+fn read_result(
+    f: impl FnOnce(*mut *mut sys::o3d_registration_result_t) -> sys::o3d_status,
+) -> Result<RegistrationResult> {
     let mut out = ptr::null_mut();
     check(f(&mut out))?;
     let raw = RawResult(
@@ -129,7 +132,12 @@ fn read_result(f: impl FnOnce(*mut *mut sys::o3d_registration_result_t) -> sys::
             .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no result"))?,
     );
     let h = raw.0.as_ptr();
-    let mut r = RegistrationResult { transformation: [[0.0; 4]; 4], fitness: 0.0, inlier_rmse: 0.0, correspondence_set: Vec::new() };
+    let mut r = RegistrationResult {
+        transformation: [[0.0; 4]; 4],
+        fitness: 0.0,
+        inlier_rmse: 0.0,
+        correspondence_set: Vec::new(),
+    };
     // SAFETY: valid handle; out-pointers sized as the header says.
     unsafe {
         check(sys::o3d_registration_result_get_transformation(h, r.transformation.as_mut_ptr().cast()))?;
@@ -137,8 +145,9 @@ fn read_result(f: impl FnOnce(*mut *mut sys::o3d_registration_result_t) -> sys::
         check(sys::o3d_registration_result_get_inlier_rmse(h, &mut r.inlier_rmse))?;
     }
     // SAFETY: `out` has room for `cap` pairs of int32, or is NULL.
-    r.correspondence_set =
-        copy_out::<[i32; 2]>(|out, cap, n| unsafe { sys::o3d_registration_result_get_correspondence_set(h, out.cast(), cap, n) })?;
+    r.correspondence_set = copy_out::<[i32; 2]>(|out, cap, n| unsafe {
+        sys::o3d_registration_result_get_correspondence_set(h, out.cast(), cap, n)
+    })?;
     Ok(r)
 }
 
@@ -167,7 +176,14 @@ pub fn registration_icp(
     let opts = options.to_raw()?;
     // SAFETY: valid handles, 16 doubles, valid options without callback.
     read_result(|out| unsafe {
-        sys::o3d_register_icp(out, source.as_raw(), target.as_raw(), max_correspondence_distance, init.as_ptr().cast(), &opts)
+        sys::o3d_register_icp(
+            out,
+            source.as_raw(),
+            target.as_raw(),
+            max_correspondence_distance,
+            init.as_ptr().cast(),
+            &opts,
+        )
     })
 }
 
@@ -191,7 +207,14 @@ where
     opts.user_data = &mut callback as *mut &mut ProgressFn<'_> as *mut c_void;
     // SAFETY: valid handles, 16 doubles; user_data outlives the call.
     read_result(|out| unsafe {
-        sys::o3d_register_icp(out, source.as_raw(), target.as_raw(), max_correspondence_distance, init.as_ptr().cast(), &opts)
+        sys::o3d_register_icp(
+            out,
+            source.as_raw(),
+            target.as_raw(),
+            max_correspondence_distance,
+            init.as_ptr().cast(),
+            &opts,
+        )
     })
 }
 

@@ -40,6 +40,10 @@ std::vector<uint8_t> write_xyzn(const geometry::PointCloud& cloud);
 std::vector<uint8_t> write_xyzrgb(const geometry::PointCloud& cloud);
 std::vector<uint8_t> write_pts(const geometry::PointCloud& cloud);
 
+/// @brief Size the cloud's arrays for n points (left uninitialised, to be overwritten) and map
+/// their memory up front.
+void allocate_cloud(geometry::PointCloud& cloud, size_t n, bool normals, bool colors);
+
 /// @brief A [0,1] colour channel as 0..255, the way Open3D quantises (clamp, round); NaN gives 0.
 inline uint8_t color_to_u8(double c) {
     if (!(c > 0.0)) return 0;

@@ -173,9 +173,7 @@ struct PcdPlan {
     }
 
     void allocate(geometry::PointCloud& cloud, size_t n) const {
-        cloud.points.resize(n);
-        if (normals) cloud.normals.resize(n);
-        if (rgb >= 0) cloud.colors.resize(n);
+        allocate_cloud(cloud, n, normals, rgb >= 0);
     }
 };
 

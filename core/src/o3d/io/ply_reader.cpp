@@ -171,9 +171,7 @@ struct VertexPlan {
     }
 
     void allocate(geometry::PointCloud& cloud, size_t n) const {
-        cloud.points.resize(n);
-        if (normals) cloud.normals.resize(n);
-        if (colors) cloud.colors.resize(n);
+        allocate_cloud(cloud, n, normals, colors);
     }
 
     /// @brief Store one vertex whose kept values are in `v` (colours already scaled).

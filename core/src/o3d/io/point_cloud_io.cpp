@@ -14,6 +14,16 @@ namespace detail {
 
 void parse_error(const Input& in, const std::string& reason) { throw ParseError(in.name + ": " + reason); }
 
+void allocate_cloud(geometry::PointCloud& cloud, size_t n, bool normals, bool colors) {
+    auto one = [n](std::vector<Eigen::Vector3d>& v) {
+        v.resize(n);
+        prefault(v.data(), n * sizeof(Eigen::Vector3d));
+    };
+    one(cloud.points);
+    if (normals) one(cloud.normals);
+    if (colors) one(cloud.colors);
+}
+
 }  // namespace detail
 
 namespace {

@@ -38,6 +38,7 @@ template <typename Sums>
 struct PassWorkspace {
     std::vector<int32_t> nearest;  ///< per source point: target index, or -1 when none in range
     std::vector<BlockSums<Sums>> blocks;
+    bool warm = false;  ///< `nearest` holds the previous pass's pairs for this same source
 };
 
 /// @brief Totals of one pass.
@@ -61,8 +62,9 @@ PassTotals<Sums> correspondence_pass(const std::vector<Eigen::Vector3d>& source,
                                      PassWorkspace<Sums>& ws, const Visit& visit) {
     const int64_t n = static_cast<int64_t>(source.size());
     const int64_t num_blocks = (n + kBlockSize - 1) / kBlockSize;
-    ws.nearest.resize(source.size());
     ws.blocks.resize(static_cast<size_t>(num_blocks));
+    if (!ws.warm) ws.nearest.assign(source.size(), -1);
+    const auto& targets = tree.points();
     const Eigen::Matrix3d rotation = transform.topLeftCorner<3, 3>();
     const Eigen::Vector3d translation = transform.topRightCorner<3, 1>();
     const int threads = static_cast<int>(std::max<int64_t>(1, std::min<int64_t>(num_threads, num_blocks)));
@@ -78,7 +80,16 @@ PassTotals<Sums> correspondence_pass(const std::vector<Eigen::Vector3d>& source,
                 const Eigen::Vector3d moved = rotation * source[static_cast<size_t>(i)] + translation;
                 int index = -1;
                 double distance2 = 0.0;
-                if (moved.allFinite()) index = tree.search_nearest(moved, max_distance, distance2);
+                if (moved.allFinite()) {
+                    // Between ICP iterations points move little: the previous partner bounds the nearest
+                    // distance, and a tight search radius prunes most of the tree. The bound is inflated
+                    // so that the previous partner itself (at exactly that distance) stays inside it.
+                    double radius = max_distance;
+                    const int32_t previous = ws.warm ? ws.nearest[static_cast<size_t>(i)] : -1;
+                    if (previous >= 0)
+                        radius = std::min(radius, (moved - targets[previous]).norm() * (1.0 + 1e-9) + 1e-150);
+                    index = tree.search_nearest(moved, radius, distance2);
+                }
                 ws.nearest[static_cast<size_t>(i)] = index;
                 if (index < 0) continue;
                 ++block.count;
@@ -92,6 +103,7 @@ PassTotals<Sums> correspondence_pass(const std::vector<Eigen::Vector3d>& source,
         ws.blocks[static_cast<size_t>(b)] = block;
     }
     if (error) std::rethrow_exception(error);
+    ws.warm = true;
 
     PassTotals<Sums> totals;
     for (const auto& block : ws.blocks) {

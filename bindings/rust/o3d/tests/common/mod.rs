@@ -1,0 +1,123 @@
+//! Shared test helpers: test data lookup, a deterministic generator, small geometry.
+#![allow(dead_code)]
+use std::path::PathBuf;
+
+/// `$O3D_TEST_DATA/<rel>` (default `<repo>/../shared/data`). `None` (with a note) when missing,
+/// unless `O3D_REQUIRE_TEST_DATA=1`, where a missing file fails the test.
+pub fn data_file(rel: &str) -> Option<PathBuf> {
+    let root = std::env::var_os("O3D_TEST_DATA")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../../shared/data"));
+    let path = root.join(rel);
+    if path.is_file() {
+        return Some(path);
+    }
+    if std::env::var("O3D_REQUIRE_TEST_DATA").as_deref() == Ok("1") {
+        panic!("test data {} is missing and O3D_REQUIRE_TEST_DATA=1", path.display());
+    }
+    eprintln!("note: skipping, test data {} not found (set O3D_TEST_DATA)", path.display());
+    None
+}
+
+/// A fresh, unique temporary directory, removed on drop.
+pub struct TempDir(pub PathBuf);
+
+impl TempDir {
+    pub fn new(tag: &str) -> TempDir {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        static N: AtomicUsize = AtomicUsize::new(0);
+        let dir = std::env::temp_dir().join(format!(
+            "o3d-rust-{tag}-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Deterministic xorshift generator (no external crates).
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn next_f64(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next_f64()
+    }
+
+    pub fn points(&mut self, n: usize, lo: f64, hi: f64) -> Vec<[f64; 3]> {
+        (0..n).map(|_| [self.range(lo, hi), self.range(lo, hi), self.range(lo, hi)]).collect()
+    }
+}
+
+pub fn dist2(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]).powi(2)).sum()
+}
+
+pub fn norm(a: [f64; 3]) -> f64 {
+    dist2(a, [0.0; 3]).sqrt()
+}
+
+/// Row-major rotation about a unit `axis` by `angle` radians (Rodrigues).
+pub fn rotation(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
+    let n = norm(axis);
+    let [x, y, z] = [axis[0] / n, axis[1] / n, axis[2] / n];
+    let (s, c) = angle.sin_cos();
+    let t = 1.0 - c;
+    [
+        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
+    ]
+}
+
+/// 4x4 from rotation and translation.
+pub fn rigid(r: [[f64; 3]; 3], t: [f64; 3]) -> [[f64; 4]; 4] {
+    let mut m = [[0.0; 4]; 4];
+    for i in 0..3 {
+        m[i][..3].copy_from_slice(&r[i]);
+        m[i][3] = t[i];
+    }
+    m[3][3] = 1.0;
+    m
+}
+
+pub fn apply(m: &[[f64; 4]; 4], p: [f64; 3]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for i in 0..3 {
+        out[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
+    }
+    out
+}
+
+pub fn max_abs_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    let mut d: f64 = 0.0;
+    for i in 0..4 {
+        for j in 0..4 {
+            d = d.max((a[i][j] - b[i][j]).abs());
+        }
+    }
+    d
+}

@@ -1,0 +1,29 @@
+//! The figure1 example runs on the real scan (built by cargo for this test) and reports what it did.
+mod common;
+
+use std::process::Command;
+
+#[test]
+fn figure1_example_runs() {
+    let Some(input) = common::data_file("open3d/Feature/cloud_bin_0.pcd") else { return };
+    // Cargo builds examples before integration tests; find it next to this test binary.
+    let exe = std::env::current_exe().unwrap().parent().unwrap().parent().unwrap().join("examples/figure1");
+    if !exe.exists() {
+        panic!("{} was not built (run plain `cargo test`, or `cargo build --examples` first)", exe.display());
+    }
+    let dir = common::TempDir::new("example");
+    let out = dir.path("down.pcd");
+    let run = Command::new(&exe).arg(&input).arg(&out).output().unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(run.status.success(), "stdout: {stdout}\nstderr: {}", String::from_utf8_lossy(&run.stderr));
+    assert!(stdout.contains("read 3903 points"), "{stdout}");
+    assert!(stdout.contains("estimate_normals"), "{stdout}");
+    let back = o3d::io::read_point_cloud(&out, "auto", &Default::default()).unwrap();
+    assert!(back.has_normals().unwrap() && !back.is_empty() && back.len() < 3903);
+
+    // Usage error and a missing input are reported with a non-zero status.
+    assert_eq!(Command::new(&exe).output().unwrap().status.code(), Some(2));
+    let missing = Command::new(&exe).arg(dir.path("none.pcd")).arg(&out).output().unwrap();
+    assert_eq!(missing.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("Io"));
+}

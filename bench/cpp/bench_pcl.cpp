@@ -135,6 +135,29 @@ void run_pcl(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
             const std::string path = cfg.files.at(src + "." + ext);
             out[row_read(up, labels.at(src))] = guarded([&] {
                 pcl::PointCloud<PointFull> c;
+                bool typed_ok = true;
+                try {
+                    if (ext == "ply") pcl::io::loadPLYFile(path, c);
+                    else pcl::io::loadPCDFile(path, c);
+                    check_loaded(c, path);
+                } catch (const std::exception&) {
+                    typed_ok = false;
+                }
+                if (!typed_ok) {
+                    // PCL cannot map double x/y/z (as o3d and Open3D write PLY) onto a float point type: time
+                    // its untyped reader instead, which parses every property into a PCLPointCloud2 blob.
+                    pcl::PCLPointCloud2 blob;
+                    return measure(
+                        cfg, nullptr,
+                        [&] {
+                            const int rc = ext == "ply" ? pcl::io::loadPLYFile(path, blob) : pcl::io::loadPCDFile(path, blob);
+                            if (rc != 0) throw std::runtime_error("PCL could not read " + path);
+                        },
+                        [&] {
+                            return std::to_string(std::size_t(blob.width) * blob.height) +
+                                   " pts (PCLPointCloud2: typed read cannot map double x/y/z)";
+                        });
+                }
                 return measure(
                     cfg, nullptr,
                     [&] {

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "o3d/common.h"
+#include "o3d/pointcloud.h"
 #include "o3d/geometry/point_cloud.h"
+#include "o3d/kdtree/kd_tree.h"
 #include "o3d/utility/error.h"
 
 struct o3d_pointcloud {
@@ -119,5 +121,10 @@ void copy_out(const T* src, size_t count, T* out, size_t capacity, size_t* out_n
 
 /// @brief Throw InvalidArgument unless `x` is finite.
 void require_finite(double x, const char* name);
+
+/// @brief The core search parameter for a C one (NULL: KNN 30); validates kind, knn and radius.
+o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
+/// @brief Validate a per-call thread count (0 = library default, negative is invalid).
+int to_num_threads(int32_t num_threads);
 
 }  // namespace o3d::capi

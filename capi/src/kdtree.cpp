@@ -8,12 +8,6 @@
 #include "o3d/kdtree.h"
 #include "o3d/kdtree/kd_tree.h"
 
-namespace o3d::capi {
-// Defined in pointcloud.cpp (one conversion for every call taking an o3d_search_param_t).
-o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
-int to_num_threads(int32_t num_threads);
-}  // namespace o3d::capi
-
 struct o3d_kdtree {
     std::unique_ptr<const o3d::kdtree::KDTree> tree;  // owns a copy of its points: independent of any cloud
 };

@@ -26,9 +26,9 @@ long header_value(const std::string& text, const std::string& key) {
     return std::stol(text.substr(at + 1 + key.size()));
 }
 
-class DataFile : public testing::TestWithParam<const char*> {};
+class ioDataFile : public testing::TestWithParam<const char*> {};
 
-TEST_P(DataFile, ReadsTheAnnouncedPointCount) {
+TEST_P(ioDataFile, ReadsTheAnnouncedPointCount) {
     O3D_TEST_DATA_OR_SKIP(path, std::string("open3d/") + GetParam());
     const std::string text = slurp(path);
     const bool ply = path.size() > 4 && path.compare(path.size() - 4, 4, ".ply") == 0;
@@ -44,12 +44,12 @@ TEST_P(DataFile, ReadsTheAnnouncedPointCount) {
     EXPECT_EQ(mem.colors, pc.colors);
 }
 
-INSTANTIATE_TEST_SUITE_P(SharedData, DataFile,
+INSTANTIATE_TEST_SUITE_P(SharedData, ioDataFile,
                          testing::Values("fragment.pcd", "Feature/cloud_bin_0.pcd", "Feature/cloud_bin_1.pcd",
                                          "bathtub_0154.ply", "color.ply", "knot.ply", "sphere.ply",
                                          "test_sample_ascii.ply", "test_sample_custom.ply"));
 
-TEST(DataFiles, FragmentHasNormalsAndColors) {
+TEST(ioDataFiles, FragmentHasNormalsAndColors) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/fragment.pcd");
     const auto pc = o3d::io::read_point_cloud(path);
     ASSERT_EQ(pc.size(), 113662u);
@@ -61,7 +61,7 @@ TEST(DataFiles, FragmentHasNormalsAndColors) {
     }
 }
 
-TEST(DataFiles, MeshPlyGivesItsVerticesWithNormalsAndColors) {
+TEST(ioDataFiles, MeshPlyGivesItsVerticesWithNormalsAndColors) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/color.ply");
     const auto pc = o3d::io::read_point_cloud(path);
     EXPECT_EQ(pc.size(), 3017u);
@@ -69,7 +69,7 @@ TEST(DataFiles, MeshPlyGivesItsVerticesWithNormalsAndColors) {
     EXPECT_TRUE(pc.has_colors());  // uchar red green blue (alpha ignored)
 }
 
-TEST(DataFiles, AsciiPlyValues) {
+TEST(ioDataFiles, AsciiPlyValues) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/test_sample_ascii.ply");
     const auto pc = o3d::io::read_point_cloud(path);
     ASSERT_EQ(pc.size(), 7u);
@@ -80,7 +80,7 @@ TEST(DataFiles, AsciiPlyValues) {
 // Open3D's own test reads this file and only checks that "intensity" (a char property between
 // the coordinates and the normals) is not exposed: the file is valid PLY. Its two vertices and
 // normals must come through with the char skipped.
-TEST(DataFiles, WrongFormatSampleSkipsTheCharProperty) {
+TEST(ioDataFiles, WrongFormatSampleSkipsTheCharProperty) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/test_sample_wrong_format.ply");
     const auto pc = o3d::io::read_point_cloud(path);
     ASSERT_EQ(pc.size(), 2u);
@@ -90,7 +90,7 @@ TEST(DataFiles, WrongFormatSampleSkipsTheCharProperty) {
 }
 
 // ... but read as what it is not, it fails with a parse error naming the file.
-TEST(DataFiles, WrongFormatSampleFailsAsPcd) {
+TEST(ioDataFiles, WrongFormatSampleFailsAsPcd) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/test_sample_wrong_format.ply");
     try {
         o3d::io::read_point_cloud(path, "pcd");
@@ -100,7 +100,7 @@ TEST(DataFiles, WrongFormatSampleFailsAsPcd) {
     }
 }
 
-TEST(DataFiles, SimpleXyz) {
+TEST(ioDataFiles, SimpleXyz) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/simple.xyz");
     const auto pc = o3d::io::read_point_cloud(path);
     ASSERT_EQ(pc.size(), 4u);  // four lines of x y z
@@ -108,7 +108,7 @@ TEST(DataFiles, SimpleXyz) {
 }
 
 // my_points.txt holds x y z rows but its extension names no format: auto fails, "xyz" reads it.
-TEST(DataFiles, MyPointsTxtNeedsAnExplicitFormat) {
+TEST(ioDataFiles, MyPointsTxtNeedsAnExplicitFormat) {
     O3D_TEST_DATA_OR_SKIP(path, "open3d/my_points.txt");
     EXPECT_THROW(o3d::io::read_point_cloud(path), o3d::Unsupported);
     EXPECT_EQ(o3d::io::read_point_cloud(path, "xyz").size(), 4u);

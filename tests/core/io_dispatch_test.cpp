@@ -14,7 +14,7 @@ using o3d::geometry::PointCloud;
 
 std::string temp(const std::string& name) { return testing::TempDir() + "o3d_io_dispatch_" + name; }
 
-TEST(Dispatch, ExtensionPicksTheFormatCaseInsensitively) {
+TEST(ioDispatch, ExtensionPicksTheFormatCaseInsensitively) {
     const PointCloud in = o3d::test::make_cloud(5, true, false);
     const std::string path = temp("cloud.XYZN");
     o3d::io::write_point_cloud(path, in);
@@ -29,7 +29,7 @@ TEST(Dispatch, ExtensionPicksTheFormatCaseInsensitively) {
     std::remove(path.c_str());
 }
 
-TEST(Dispatch, ExplicitFormatOverridesTheExtension) {
+TEST(ioDispatch, ExplicitFormatOverridesTheExtension) {
     const PointCloud in = o3d::test::make_cloud(5, false, false);
     const std::string path = temp("cloud.dat");
     o3d::io::write_point_cloud(path, in, "PCD");
@@ -39,7 +39,7 @@ TEST(Dispatch, ExplicitFormatOverridesTheExtension) {
     std::remove(path.c_str());
 }
 
-TEST(Dispatch, UnknownFormatsAreUnsupported) {
+TEST(ioDispatch, UnknownFormatsAreUnsupported) {
     const PointCloud in = o3d::test::make_cloud(1, false, false);
     EXPECT_THROW(o3d::io::write_point_cloud_to_memory(in, "obj"), o3d::Unsupported);
     EXPECT_THROW(o3d::test::read_text("1 2 3", "las"), o3d::Unsupported);
@@ -47,7 +47,7 @@ TEST(Dispatch, UnknownFormatsAreUnsupported) {
     EXPECT_THROW(o3d::io::read_point_cloud(temp("dir.d/cloud")), o3d::Unsupported);
 }
 
-TEST(Dispatch, MemoryNeedsAFormat) {
+TEST(ioDispatch, MemoryNeedsAFormat) {
     EXPECT_THROW(o3d::test::read_text("1 2 3", "auto"), o3d::InvalidArgument);
     EXPECT_THROW(o3d::test::read_text("1 2 3", ""), o3d::InvalidArgument);
     EXPECT_THROW(o3d::io::write_point_cloud_to_memory(PointCloud{}, "auto"), o3d::InvalidArgument);
@@ -55,7 +55,7 @@ TEST(Dispatch, MemoryNeedsAFormat) {
     EXPECT_EQ(o3d::io::read_point_cloud_from_memory(nullptr, 0, "xyz").size(), 0u);
 }
 
-TEST(Dispatch, MissingFileIsAnIoErrorNamingIt) {
+TEST(ioDispatch, MissingFileIsAnIoErrorNamingIt) {
     const std::string path = temp("does_not_exist.ply");
     try {
         o3d::io::read_point_cloud(path);
@@ -67,7 +67,7 @@ TEST(Dispatch, MissingFileIsAnIoErrorNamingIt) {
     EXPECT_THROW(o3d::io::write_point_cloud("/nonexistent_dir_o3d/x.ply", PointCloud{}), o3d::IoError);
 }
 
-TEST(Dispatch, ParseErrorsNameTheFile) {
+TEST(ioDispatch, ParseErrorsNameTheFile) {
     const std::string path = temp("broken.pcd");
     {
         std::ofstream f(path);
@@ -83,13 +83,13 @@ TEST(Dispatch, ParseErrorsNameTheFile) {
     std::remove(path.c_str());
 }
 
-TEST(Dispatch, TextFormatsSkipCommentsAndBlankLines) {
+TEST(ioDispatch, TextFormatsSkipCommentsAndBlankLines) {
     const auto pc = o3d::test::read_text("# scanner export\n\n1 2 3 extra columns ignored\r\n  \n4 5 6", "xyz");
     ASSERT_EQ(pc.size(), 2u);
     EXPECT_EQ(pc.points[1], Eigen::Vector3d(4, 5, 6));
 }
 
-TEST(Dispatch, PtsVariants) {
+TEST(ioDispatch, PtsVariants) {
     const auto i = o3d::test::read_text("2\n1 2 3 10\n4 5 6 20\n", "pts");
     EXPECT_EQ(i.size(), 2u);
     EXPECT_FALSE(i.has_colors());

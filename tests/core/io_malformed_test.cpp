@@ -24,7 +24,7 @@ void expect_parse_error(const std::string& text, const std::string& format, cons
 const std::string kPlyHead = "ply\nformat binary_little_endian 1.0\n";
 const std::string kXyz = "property float x\nproperty float y\nproperty float z\n";
 
-TEST(Malformed, PlyHeaders) {
+TEST(ioMalformed, PlyHeaders) {
     expect_parse_error("", "ply", "first line");
     expect_parse_error("plx\nformat ascii 1.0\nend_header\n", "ply", "first line");
     expect_parse_error("ply\nformat ascii 1.0\nelement vertex 1\n" + kXyz, "ply", "end_header");
@@ -48,7 +48,7 @@ TEST(Malformed, PlyHeaders) {
                        "ply", "is a list");
 }
 
-TEST(Malformed, PlyCountsThatLie) {
+TEST(ioMalformed, PlyCountsThatLie) {
     // Four billion vertices announced, twelve bytes present: refused before any allocation.
     expect_parse_error(kPlyHead + "element vertex 4000000000\n" + kXyz + "end_header\n" + std::string(12, '\0'), "ply",
                        "declares 4000000000 records");
@@ -56,7 +56,7 @@ TEST(Malformed, PlyCountsThatLie) {
                        "declares 9223372036854775807");
     expect_parse_error("ply\nformat ascii 1.0\nelement vertex 1000000000\n" + kXyz + "end_header\n1 2 3\n", "ply",
                        "declares 1000000000 vertices");
-    expect_parse_error("ply\nformat ascii 1.0\nelement vertex 2\n" + kXyz + "end_header\n1 2 3\n4 5\n", "ply",
+    expect_parse_error("ply\nformat ascii 1.0\nelement vertex 2\n" + kXyz + "end_header\n10.5 20.5 30.5\n4 5\n", "ply",
                        "ends inside vertex 1");
     expect_parse_error("ply\nformat ascii 1.0\nelement vertex 1\n" + kXyz + "end_header\n1 2 3\n4 5 6\n", "ply",
                        "counts are too small");
@@ -77,7 +77,7 @@ TEST(Malformed, PlyCountsThatLie) {
                        "ply", "negative length");
 }
 
-TEST(Malformed, PcdHeaders) {
+TEST(ioMalformed, PcdHeaders) {
     expect_parse_error("", "pcd", "no DATA line");
     expect_parse_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nPOINTS 1\n", "pcd", "no DATA line");
     expect_parse_error("SIZE 4\nTYPE F\nPOINTS 1\nDATA ascii\n", "pcd", "no FIELDS");
@@ -102,11 +102,11 @@ TEST(Malformed, PcdHeaders) {
 
 const std::string kPcdHead = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
 
-TEST(Malformed, PcdCountsThatLie) {
+TEST(ioMalformed, PcdCountsThatLie) {
     expect_parse_error(kPcdHead + "POINTS 4000000000\nDATA binary\n" + std::string(24, '\0'), "pcd",
                        "declares 4000000000 points of 12 bytes but only 24");
     expect_parse_error(kPcdHead + "POINTS 4000000000\nDATA ascii\n1 2 3\n", "pcd", "declares 4000000000 points");
-    expect_parse_error(kPcdHead + "POINTS 2\nDATA ascii\n1 2 3\n4 5\n", "pcd", "ends inside point 1");
+    expect_parse_error(kPcdHead + "POINTS 2\nDATA ascii\n10.5 20.5 30.5\n4 5\n", "pcd", "ends inside point 1");
     expect_parse_error(kPcdHead + "POINTS 1\nDATA ascii\n1 2 3\n4 5 6\n", "pcd", "text follows the last");
     expect_parse_error(kPcdHead + "POINTS 1\nDATA ascii\n1 2 zz\n", "pcd", "'zz' is not a number");
     expect_parse_error(kPcdHead + "POINTS 1\nDATA binary_compressed\n\x01\x00", "pcd", "8-byte size prefix");
@@ -123,7 +123,7 @@ TEST(Malformed, PcdCountsThatLie) {
     expect_parse_error(compressed(200, 12000, std::string(200, '\xff')), "pcd", "LZF data is corrupt");
 }
 
-TEST(Malformed, TextFormats) {
+TEST(ioMalformed, TextFormats) {
     expect_parse_error("1 2 3\n4 5\n", "xyz", "line 2: expected 3 numbers");
     expect_parse_error("1 2 3 4 5 6\n1 2 3\n", "xyzn", "line 2: expected 6 numbers");
     expect_parse_error("1 2 3 0.1 0.2 abc\n", "xyzrgb", "expected 6 numbers");
@@ -138,7 +138,7 @@ TEST(Malformed, TextFormats) {
 
 // Cutting a valid file anywhere must raise ParseError for the binary formats (every byte
 // counts); text formats may legitimately end at a line boundary, so they must merely not crash.
-TEST(Malformed, TruncatedAtEveryOffset) {
+TEST(ioMalformed, TruncatedAtEveryOffset) {
     const auto cloud = o3d::test::make_cloud(20, true, true);
     struct Variant {
         const char* format;
@@ -166,7 +166,7 @@ TEST(Malformed, TruncatedAtEveryOffset) {
 }
 
 // Random bytes, and random bytes behind a plausible header, never escape as anything but ParseError.
-TEST(Malformed, RandomGarbage) {
+TEST(ioMalformed, RandomGarbage) {
     std::mt19937 rng(1234);
     const std::string prefixes[] = {"", "ply\nformat binary_little_endian 1.0\nelement vertex 5\n" + kXyz + "end_header\n",
                                     "ply\nformat ascii 1.0\nelement vertex 5\n" + kXyz + "end_header\n",

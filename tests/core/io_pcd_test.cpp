@@ -45,13 +45,13 @@ void expect_layout_cloud(const o3d::geometry::PointCloud& pc, int n) {
     EXPECT_EQ(pc.colors[1], Eigen::Vector3d(0x33 / 255.0, 0x66 / 255.0, 0x99 / 255.0));
 }
 
-TEST(PcdRead, BinarySkipsFieldsOfEverySize) {
+TEST(ioPcdRead, BinarySkipsFieldsOfEverySize) {
     std::string s = header("binary", 3);
     for (int i = 0; i < 3; ++i) put_point(s, i);
     expect_layout_cloud(read_text(s, "pcd"), 3);
 }
 
-TEST(PcdRead, AsciiSkipsFieldsOfEveryCount) {
+TEST(ioPcdRead, AsciiSkipsFieldsOfEveryCount) {
     std::string s = header("ascii", 2);
     const std::string rgba = std::to_string(0xFF336699u);
     s += "170 0 -0.2 1e-300 1 2 3 0 1 0 " + rgba + " -5\n";
@@ -59,7 +59,7 @@ TEST(PcdRead, AsciiSkipsFieldsOfEveryCount) {
     expect_layout_cloud(read_text(s, "pcd"), 2);
 }
 
-TEST(PcdRead, PackedFloatRgbInAscii) {
+TEST(ioPcdRead, PackedFloatRgbInAscii) {
     uint32_t bits = 0x00ff8000u;
     float f;
     std::memcpy(&f, &bits, 4);
@@ -72,7 +72,7 @@ TEST(PcdRead, PackedFloatRgbInAscii) {
     EXPECT_EQ(pc.colors[0], Eigen::Vector3d(1, 128 / 255.0, 0));
 }
 
-TEST(PcdRead, OrganizedCloudKeepsNaNsUnlessAsked) {
+TEST(ioPcdRead, OrganizedCloudKeepsNaNsUnlessAsked) {
     // 2 x 2 organized cloud with two invalid pixels, as depth sensors write it.
     const std::string s = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\nPOINTS 4\n"
                           "DATA ascii\n1 1 1\nnan nan nan\n2 2 2\n3 inf 3\n";
@@ -90,7 +90,7 @@ TEST(PcdRead, OrganizedCloudKeepsNaNsUnlessAsked) {
     EXPECT_EQ(read_text(s, "pcd", inf).size(), 3u);
 }
 
-TEST(PcdRead, NanRemovalKeepsAttributesAligned) {
+TEST(ioPcdRead, NanRemovalKeepsAttributesAligned) {
     o3d::geometry::PointCloud in = o3d::test::make_cloud(6, true, true);
     in.points[0].x() = std::numeric_limits<double>::quiet_NaN();
     in.points[4].z() = std::numeric_limits<double>::quiet_NaN();
@@ -104,7 +104,7 @@ TEST(PcdRead, NanRemovalKeepsAttributesAligned) {
     EXPECT_EQ(pc.colors[2], in.colors[3]);
 }
 
-TEST(PcdRead, HeaderWithoutPointsUsesWidthTimesHeight) {
+TEST(ioPcdRead, HeaderWithoutPointsUsesWidthTimesHeight) {
     std::string s = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 2\nDATA binary\n";
     for (int i = 0; i < 18; ++i) put<float>(s, float(i));
     const auto pc = read_text(s, "pcd");
@@ -112,7 +112,7 @@ TEST(PcdRead, HeaderWithoutPointsUsesWidthTimesHeight) {
     EXPECT_EQ(pc.points[5], Eigen::Vector3d(15, 16, 17));
 }
 
-TEST(PcdRead, RgbOfOtherSizesIsNotAColour) {
+TEST(ioPcdRead, RgbOfOtherSizesIsNotAColour) {
     std::string s = "FIELDS x y z rgb\nSIZE 4 4 4 8\nTYPE F F F F\nPOINTS 1\nDATA binary\n";
     put<float>(s, 1), put<float>(s, 2), put<float>(s, 3), put<double>(s, 4);
     const auto pc = read_text(s, "pcd");

@@ -49,7 +49,7 @@ std::string tricky_binary(bool big) {
     return s;
 }
 
-TEST(PlyRead, SkipsEverythingItDoesNotKeepInBothByteOrders) {
+TEST(ioPlyRead, SkipsEverythingItDoesNotKeepInBothByteOrders) {
     for (bool big : {false, true}) {
         const auto pc = read_text(tricky_binary(big), "ply");
         ASSERT_EQ(pc.size(), 2u) << big;
@@ -62,13 +62,13 @@ TEST(PlyRead, SkipsEverythingItDoesNotKeepInBothByteOrders) {
     }
 }
 
-TEST(PlyRead, TruncatedTrailingElementIsAnError) {
+TEST(ioPlyRead, TruncatedTrailingElementIsAnError) {
     std::string s = tricky_binary(false);
     s.pop_back();
     EXPECT_NE(o3d::test::parse_error_of(o3d::test::bytes_of(s), "ply").find("camera"), std::string::npos);
 }
 
-TEST(PlyRead, AsciiWithFacesAndIntegerColours) {
+TEST(ioPlyRead, AsciiWithFacesAndIntegerColours) {
     const std::string text =
         "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\nproperty float z\r\n"
         "property uchar red\r\nproperty uchar green\r\nproperty uchar blue\r\nproperty ushort quality\r\n"
@@ -83,7 +83,7 @@ TEST(PlyRead, AsciiWithFacesAndIntegerColours) {
     EXPECT_FALSE(pc.has_normals());
 }
 
-TEST(PlyRead, SixteenBitColoursScaleByTheirRange) {
+TEST(ioPlyRead, SixteenBitColoursScaleByTheirRange) {
     std::string s = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                     "property float z\nproperty ushort red\nproperty ushort green\nproperty ushort blue\nend_header\n";
     put<float>(s, 1, false), put<float>(s, 2, false), put<float>(s, 3, false);
@@ -93,7 +93,7 @@ TEST(PlyRead, SixteenBitColoursScaleByTheirRange) {
     EXPECT_EQ(pc.colors[0], Eigen::Vector3d(1, 0, 0.2));
 }
 
-TEST(PlyRead, PartialNormalsAreIgnored) {
+TEST(ioPlyRead, PartialNormalsAreIgnored) {
     const auto pc = read_text(
         "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
         "property float nx\nproperty float ny\nend_header\n1 2 3 4 5\n",
@@ -102,7 +102,7 @@ TEST(PlyRead, PartialNormalsAreIgnored) {
     EXPECT_FALSE(pc.has_normals());
 }
 
-TEST(PlyRead, ZeroVerticesIsAnEmptyCloud) {
+TEST(ioPlyRead, ZeroVerticesIsAnEmptyCloud) {
     const auto pc = read_text("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
                               "property float z\nend_header\n",
                               "ply");

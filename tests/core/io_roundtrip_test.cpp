@@ -22,11 +22,14 @@ struct Case {
     bool colors;
 };
 
-std::string case_name(const testing::TestParamInfo<Case>& info) {
-    const Case& c = info.param;
+std::string name_of(const Case& c) {
     return c.format + (c.ascii ? "_ascii" : "") + (c.compressed ? "_compressed" : "") + (c.normals ? "_normals" : "") +
            (c.colors ? "_colors" : "");
 }
+
+std::string case_name(const testing::TestParamInfo<Case>& info) { return name_of(info.param); }
+// Keeps gtest from printing the struct as raw bytes in test names.
+void PrintTo(const Case& c, std::ostream* os) { *os << name_of(c); }
 
 std::vector<Case> all_cases() {
     std::vector<Case> out;
@@ -45,7 +48,7 @@ std::vector<Case> all_cases() {
     return out;
 }
 
-class RoundTrip : public testing::TestWithParam<Case> {};
+class ioRoundTrip : public testing::TestWithParam<Case> {};
 
 // Point tolerance: PCD stores float32; the text formats and PLY store doubles exactly (PLY ascii
 // and the XYZ family print the shortest round-tripping decimal).
@@ -62,7 +65,7 @@ void check(const Case& c, const PointCloud& in, const PointCloud& out) {
     if (keeps_colors) expect_near(in.colors, out.colors, 1e-15, "colors");
 }
 
-TEST_P(RoundTrip, Memory) {
+TEST_P(ioRoundTrip, Memory) {
     const Case& c = GetParam();
     const PointCloud in = make_cloud(257, c.normals, c.colors);
     o3d::io::WriteOptions w;
@@ -73,19 +76,19 @@ TEST_P(RoundTrip, Memory) {
     check(c, in, o3d::io::read_point_cloud_from_memory(bytes.data(), bytes.size(), c.format));
 }
 
-TEST_P(RoundTrip, FileByExtension) {
+TEST_P(ioRoundTrip, FileByExtension) {
     const Case& c = GetParam();
     const PointCloud in = make_cloud(100, c.normals, c.colors, 11);
     o3d::io::WriteOptions w;
     w.write_ascii = c.ascii;
     w.compressed = c.compressed;
-    const std::string path = testing::TempDir() + "o3d_io_roundtrip_" + case_name({c, 0}) + "." + c.format;
+    const std::string path = testing::TempDir() + "o3d_io_roundtrip_" + name_of(c) + "." + c.format;
     o3d::io::write_point_cloud(path, in, "auto", w);
     check(c, in, o3d::io::read_point_cloud(path));
     std::remove(path.c_str());
 }
 
-TEST_P(RoundTrip, EmptyCloud) {
+TEST_P(ioRoundTrip, EmptyCloud) {
     const Case& c = GetParam();
     o3d::io::WriteOptions w;
     w.write_ascii = c.ascii;
@@ -94,9 +97,9 @@ TEST_P(RoundTrip, EmptyCloud) {
     EXPECT_EQ(o3d::io::read_point_cloud_from_memory(bytes.data(), bytes.size(), c.format).size(), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllFormats, RoundTrip, testing::ValuesIn(all_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(AllFormats, ioRoundTrip, testing::ValuesIn(all_cases()), case_name);
 
-TEST(RoundTripDetail, PlyBinaryIsBitExactIncludingNonFinite) {
+TEST(ioRoundTripDetail, PlyBinaryIsBitExactIncludingNonFinite) {
     PointCloud in = make_cloud(10, true, false);
     in.points[3].x() = std::numeric_limits<double>::quiet_NaN();
     in.points[4].y() = -std::numeric_limits<double>::infinity();
@@ -115,7 +118,7 @@ TEST(RoundTripDetail, PlyBinaryIsBitExactIncludingNonFinite) {
     }
 }
 
-TEST(RoundTripDetail, ColorsAreQuantisedLikeOpen3D) {
+TEST(ioRoundTripDetail, ColorsAreQuantisedLikeOpen3D) {
     PointCloud in = make_cloud(4, false, true);
     in.colors[0] = Eigen::Vector3d(-0.5, 2.0, 0.5);  // clamped, then rounded: 0, 255, 128
     in.colors[1] = Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0.999, 0.001);
@@ -128,7 +131,7 @@ TEST(RoundTripDetail, ColorsAreQuantisedLikeOpen3D) {
     }
 }
 
-TEST(RoundTripDetail, PcdCompressedIsSmallerForRepetitiveData) {
+TEST(ioRoundTripDetail, PcdCompressedIsSmallerForRepetitiveData) {
     PointCloud in;
     for (int i = 0; i < 5000; ++i) in.points.emplace_back(i % 10, 0.5, 1.0);
     o3d::io::WriteOptions w;
@@ -142,7 +145,7 @@ TEST(RoundTripDetail, PcdCompressedIsSmallerForRepetitiveData) {
                 "points");
 }
 
-TEST(RoundTripDetail, LargeCloudBinaryFormats) {
+TEST(ioRoundTripDetail, LargeCloudBinaryFormats) {
     const PointCloud in = make_cloud(200000, true, true, 3);
     for (const char* format : {"ply", "pcd"}) {
         const auto bytes = o3d::io::write_point_cloud_to_memory(in, format);
@@ -153,7 +156,7 @@ TEST(RoundTripDetail, LargeCloudBinaryFormats) {
     }
 }
 
-TEST(RoundTripDetail, WritersFollowOpen3DLayout) {
+TEST(ioRoundTripDetail, WritersFollowOpen3DLayout) {
     const PointCloud in = make_cloud(3, true, true);
     const auto ply = o3d::io::write_point_cloud_to_memory(in, "ply");
     const std::string ply_text(ply.begin(), ply.end());
@@ -172,7 +175,7 @@ TEST(RoundTripDetail, WritersFollowOpen3DLayout) {
     EXPECT_EQ(pcd.size() - (pcd_text.find("DATA binary\n") + 12), 3u * 28);
 }
 
-TEST(RoundTripDetail, XyznAndXyzrgbNeedTheirAttribute) {
+TEST(ioRoundTripDetail, XyznAndXyzrgbNeedTheirAttribute) {
     const PointCloud bare = make_cloud(3, false, false);
     EXPECT_THROW(o3d::io::write_point_cloud_to_memory(bare, "xyzn"), o3d::InvalidArgument);
     EXPECT_THROW(o3d::io::write_point_cloud_to_memory(bare, "xyzrgb"), o3d::InvalidArgument);

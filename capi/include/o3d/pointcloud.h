@@ -123,7 +123,7 @@ O3D_API o3d_status o3d_pointcloud_voxel_down_sample(o3d_pointcloud_t** out, cons
 O3D_API o3d_status o3d_pointcloud_uniform_down_sample(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
                                                       size_t every_k_points);
 /**
- * @brief Keep round(ratio * N) points chosen at random, in their original order. ratio in [0,1].
+ * @brief Keep floor(ratio * N) points chosen at random, in their original order. ratio in [0,1].
  * Same seed → same output, whatever the thread count.
  */
 O3D_API o3d_status o3d_pointcloud_random_down_sample(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,

@@ -22,12 +22,12 @@ O3D_BEGIN_DECL
 typedef struct o3d_icp_options {
     uint32_t struct_size;        /**< sizeof(o3d_icp_options_t) */
     int32_t estimation;          /**< O3D_ESTIMATION_*; default POINT_TO_POINT */
-    int32_t with_scaling;        /**< point-to-point only: also estimate a scale; default 0 */
-    double relative_fitness;     /**< stop when fitness changes less than this; default 1e-6 */
-    double relative_rmse;        /**< stop when inlier RMSE changes less than this; default 1e-6 */
-    int32_t max_iteration;       /**< default 30 */
-    int32_t num_threads;         /**< 0 = library default */
-    o3d_progress_callback progress; /**< called after each iteration with iteration/max_iteration; may be NULL */
+    int32_t with_scaling;        /**< point-to-point only (ignored for point-to-plane): also estimate a scale; default 0 */
+    double relative_fitness;     /**< >= 0; stop when fitness changes less than this; default 1e-6 */
+    double relative_rmse;        /**< >= 0; stop when inlier RMSE changes less than this; default 1e-6 */
+    int32_t max_iteration;       /**< >= 0; default 30 */
+    int32_t num_threads;         /**< >= 0; 0 = library default */
+    o3d_progress_callback progress; /**< called after each iteration with (iteration+1)/max_iteration; may be NULL */
     void* user_data;             /**< passed to `progress` */
 } o3d_icp_options_t;
 

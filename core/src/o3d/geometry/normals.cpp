@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "o3d/geometry/symmetric_eigen3.h"
+#include "o3d/kdtree/query_order.h"
 #include "o3d/utility/error.h"
 #include "o3d/utility/parallel.h"
 
@@ -50,13 +51,15 @@ void estimate_normals(PointCloud& cloud, const kdtree::KDTree& tree, const kdtre
     const bool had_normals = cloud.has_normals();
     std::vector<Eigen::Vector3d> normals(n);
     const int threads = utility::resolve_num_threads(num_threads);
+    // Neighbouring points share tree nodes: visiting them together keeps those nodes in cache.
+    const std::vector<uint32_t> order = kdtree::spatial_order(cloud.points);
 #pragma omp parallel num_threads(threads)
     {
         std::vector<int> idx;
         std::vector<double> d2;
 #pragma omp for schedule(dynamic, 512)
         for (int64_t s = 0; s < static_cast<int64_t>(n); ++s) {
-            const size_t i = static_cast<size_t>(s);
+            const size_t i = order[static_cast<size_t>(s)];
             Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
             if (tree.search(cloud.points[i], param, idx, d2) >= 3) {
                 normal = smallest_eigenvector(covariance(cloud.points, idx));

@@ -44,6 +44,9 @@ std::vector<uint8_t> write_pts(const geometry::PointCloud& cloud);
 /// their memory up front.
 void allocate_cloud(geometry::PointCloud& cloud, size_t n, bool normals, bool colors);
 
+/// @brief A zero-filled byte vector of size n whose pages are mapped up front (see prefault()).
+std::vector<uint8_t> output_buffer(size_t n);
+
 /// @brief A [0,1] colour channel as 0..255, the way Open3D quantises (clamp, round); NaN gives 0.
 inline uint8_t color_to_u8(double c) {
     if (!(c > 0.0)) return 0;

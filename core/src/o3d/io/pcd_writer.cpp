@@ -67,7 +67,7 @@ std::vector<uint8_t> write_pcd(const geometry::PointCloud& cloud, const WriteOpt
 
     const size_t record = floats * 4;
     if (!options.compressed) {
-        std::vector<uint8_t> out(header.size() + n * record);
+        std::vector<uint8_t> out = output_buffer(header.size() + n * record);
         std::memcpy(out.data(), header.data(), header.size());
         uint8_t* p = out.data() + header.size();
         float v[7];
@@ -83,7 +83,7 @@ std::vector<uint8_t> write_pcd(const geometry::PointCloud& cloud, const WriteOpt
     if (raw_size > UINT_MAX - 64)
         throw InvalidArgument("PCD binary_compressed holds at most 4 GiB of point data; " + std::to_string(n) +
                               " points need " + std::to_string(raw_size) + " bytes");
-    std::vector<uint8_t> raw(raw_size);
+    std::vector<uint8_t> raw = output_buffer(raw_size);
     float v[7];
     for (size_t i = 0; i < n; ++i) {
         point_floats(i, v);
@@ -91,7 +91,7 @@ std::vector<uint8_t> write_pcd(const geometry::PointCloud& cloud, const WriteOpt
     }
     // LZF adds at most one control byte per 32 literals, plus a little.
     const size_t bound = std::min<size_t>(raw_size + raw_size / 16 + 64, UINT_MAX);
-    std::vector<uint8_t> out(header.size() + 8 + bound);
+    std::vector<uint8_t> out = output_buffer(header.size() + 8 + bound);
     std::memcpy(out.data(), header.data(), header.size());
     uint8_t* p = out.data() + header.size();
     unsigned packed = 0;

@@ -48,7 +48,7 @@ std::vector<uint8_t> write_ply(const geometry::PointCloud& cloud, const WriteOpt
     }
 
     const size_t record = 24 + (normals ? 24 : 0) + (colors ? 3 : 0);
-    std::vector<uint8_t> out(header.size() + n * record);
+    std::vector<uint8_t> out = output_buffer(header.size() + n * record);
     std::memcpy(out.data(), header.data(), header.size());
     uint8_t* p = out.data() + header.size();
     for (size_t i = 0; i < n; ++i) {

@@ -24,6 +24,14 @@ void allocate_cloud(geometry::PointCloud& cloud, size_t n, bool normals, bool co
     if (colors) one(cloud.colors);
 }
 
+std::vector<uint8_t> output_buffer(size_t n) {
+    std::vector<uint8_t> out;
+    out.reserve(n);
+    prefault(out.data(), n);
+    out.resize(n);
+    return out;
+}
+
 }  // namespace detail
 
 namespace {

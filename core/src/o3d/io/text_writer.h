@@ -10,11 +10,13 @@
 #include <string_view>
 #include <vector>
 
+#include "o3d/io/io_internal.h"
+
 namespace o3d::io::detail {
 
 class ByteSink {
 public:
-    explicit ByteSink(size_t expected = 0) { buf_.resize(expected < 64 ? 64 : expected); }
+    explicit ByteSink(size_t expected = 0) : buf_(output_buffer(expected < 64 ? 64 : expected)) {}
 
     void put(std::string_view s) {
         char* p = grow(s.size());

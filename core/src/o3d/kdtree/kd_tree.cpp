@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 
@@ -185,14 +186,15 @@ SearchResult KDTree::search_batch(const std::vector<Eigen::Vector3d>& queries, c
         return result;
     }
 
-    // Radius / hybrid: variable counts. Each chunk of queries (in query order, fixed size, so the
-    // split does not depend on the thread count) fills its own buffers; they are concatenated after.
+    // Radius / hybrid: variable counts. Chunks of the visiting order (fixed size, so the split does
+    // not depend on the thread count) fill their own buffers; each query remembers where its answer
+    // lies, and a final pass gathers the answers in query order.
     struct Chunk {
         std::vector<int32_t> indices;
         std::vector<double> distances2;
     };
     std::vector<Chunk> chunks(static_cast<size_t>(num_chunks));
-    std::vector<size_t> counts(nq, 0);
+    std::vector<size_t> counts(nq, 0), local_start(nq, 0);
     const bool hybrid = param.kind == SearchParam::Kind::Hybrid;
     const size_t k = hybrid ? std::min(static_cast<size_t>(param.knn), size()) : 0;
     const double radius2 = square(param.radius);
@@ -205,7 +207,9 @@ SearchResult KDTree::search_batch(const std::vector<Eigen::Vector3d>& queries, c
         for (int64_t c = 0; c < num_chunks; ++c) {
             Chunk& chunk = chunks[static_cast<size_t>(c)];
             const size_t end = std::min(nq, static_cast<size_t>(c + 1) * kChunk);
-            for (size_t q = static_cast<size_t>(c) * kChunk; q < end; ++q) {
+            for (size_t j = static_cast<size_t>(c) * kChunk; j < end; ++j) {
+                const size_t q = order[j];
+                local_start[q] = chunk.indices.size();
                 if (hybrid) {
                     const size_t found = impl_->knn(queries[q], k, radius2, idx.data(), d2.data());
                     chunk.indices.insert(chunk.indices.end(), idx.begin(), idx.begin() + found);
@@ -227,12 +231,14 @@ SearchResult KDTree::search_batch(const std::vector<Eigen::Vector3d>& queries, c
     result.indices.resize(total);
     result.distances2.resize(total);
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (int64_t c = 0; c < num_chunks; ++c) {
-        Chunk& chunk = chunks[static_cast<size_t>(c)];
-        const size_t start = static_cast<size_t>(result.offsets[static_cast<size_t>(c) * kChunk]);
-        std::copy(chunk.indices.begin(), chunk.indices.end(), result.indices.begin() + start);
-        std::copy(chunk.distances2.begin(), chunk.distances2.end(), result.distances2.begin() + start);
-        chunk = Chunk{};
+    for (int64_t j = 0; j < static_cast<int64_t>(nq); ++j) {
+        const size_t q = order[static_cast<size_t>(j)];
+        const Chunk& chunk = chunks[static_cast<size_t>(j) / kChunk];
+        const size_t from = local_start[q], to = static_cast<size_t>(result.offsets[q]);
+        std::copy_n(chunk.indices.begin() + static_cast<std::ptrdiff_t>(from), counts[q],
+                    result.indices.begin() + static_cast<std::ptrdiff_t>(to));
+        std::copy_n(chunk.distances2.begin() + static_cast<std::ptrdiff_t>(from), counts[q],
+                    result.distances2.begin() + static_cast<std::ptrdiff_t>(to));
     }
     return result;
 }

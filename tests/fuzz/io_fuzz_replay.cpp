@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+// Replays the committed seed corpus and deterministic mutations of every seed through the
+// readers. Passing means: no crash, no sanitizer report, and no exception but o3d::ParseError.
+// `io_fuzz_replay --write-seeds DIR` regenerates the writer-made part of the corpus.
+#include <dirent.h>
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <cstring>
+#include <algorithm>
+#include <exception>
+#include <stdexcept>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "o3d/io/point_cloud_io.h"
+#include "o3d/utility/error.h"
+
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+const char* const kFormats[] = {"ply", "pcd", "xyz", "xyzn", "xyzrgb", "pts"};
+constexpr int kMutationsPerSeed = 3000;
+
+struct Rng {
+    uint64_t s;
+    uint64_t next() {  // splitmix64: tiny, and the same sequence on every platform
+        uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    size_t below(size_t n) { return n ? static_cast<size_t>(next() % n) : 0; }
+};
+
+/// @brief One random edit of the kinds that break parsers: bit flips, boundary bytes, cuts,
+/// deleted and duplicated spans, and header numbers swapped for extreme ones.
+void mutate(Bytes& b, Rng& rng) {
+    static const char* const kNumbers[] = {"-1", "0", "4294967295", "4294967296", "18446744073709551615",
+                                           "9223372036854775807", "99999999999999999999", "1e400", "nan", "-0"};
+    static const uint8_t kBytes[] = {0, 0xff, '\n', '\r', ' ', '-', '9', '.', 'e', 0x80, 0x7f};
+    const size_t n = b.size();
+    switch (rng.below(7)) {
+        case 0:
+            if (n) b[rng.below(n)] ^= static_cast<uint8_t>(1u << rng.below(8));
+            break;
+        case 1:
+            if (n) b[rng.below(n)] = kBytes[rng.below(sizeof kBytes)];
+            break;
+        case 2: b.resize(rng.below(n + 1)); break;
+        case 3: {
+            const size_t at = rng.below(n + 1), len = rng.below(std::min<size_t>(n - at, 64) + 1);
+            b.erase(b.begin() + static_cast<long>(at), b.begin() + static_cast<long>(at + len));
+            break;
+        }
+        case 4: {
+            const size_t at = rng.below(n + 1), len = rng.below(std::min<size_t>(n - at, 64) + 1);
+            const Bytes span(b.begin() + static_cast<long>(at), b.begin() + static_cast<long>(at + len));
+            b.insert(b.begin() + static_cast<long>(rng.below(n + 1)), span.begin(), span.end());
+            break;
+        }
+        case 5: {
+            const size_t at = rng.below(n + 1), len = rng.below(9);
+            for (size_t k = 0; k < len; ++k) b.insert(b.begin() + static_cast<long>(at), static_cast<uint8_t>(rng.next()));
+            break;
+        }
+        default: {
+            // Replace the k-th run of digits (header counts, sizes) with an extreme number.
+            std::vector<size_t> starts;
+            for (size_t i = 0; i < n; ++i)
+                if (b[i] >= '0' && b[i] <= '9' && (i == 0 || b[i - 1] < '0' || b[i - 1] > '9')) starts.push_back(i);
+            if (starts.empty()) break;
+            const size_t at = starts[rng.below(std::min<size_t>(starts.size(), 40))];
+            size_t end = at;
+            while (end < n && b[end] >= '0' && b[end] <= '9') ++end;
+            const char* num = kNumbers[rng.below(sizeof kNumbers / sizeof *kNumbers)];
+            b.erase(b.begin() + static_cast<long>(at), b.begin() + static_cast<long>(end));
+            b.insert(b.begin() + static_cast<long>(at), num, num + std::strlen(num));
+        }
+    }
+}
+
+uint64_t fnv1a(const std::string& s) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ull;
+    return h;
+}
+
+int failures = 0;
+
+/// @brief Read `b` as `format`; anything but success or ParseError is reported.
+void read_one(const Bytes& b, const char* format, const std::string& what) {
+    try {
+        o3d::io::ReadOptions options;
+        options.remove_nan_points = b.size() % 2 == 1;
+        const auto cloud = o3d::io::read_point_cloud_from_memory(b.data(), b.size(), format, options);
+        const auto again = o3d::io::write_point_cloud_to_memory(cloud, format);
+        if (o3d::io::read_point_cloud_from_memory(again.data(), again.size(), format).size() != cloud.size())
+            throw std::runtime_error("re-reading the written cloud changed its size");
+    } catch (const o3d::ParseError& e) {
+        if (std::strstr(e.what(), "<memory>: ") != e.what()) {
+            ++failures;
+            std::fprintf(stderr, "FAIL %s as %s: ParseError without the source name: %s\n", what.c_str(), format,
+                         e.what());
+        }
+    } catch (const std::exception& e) {
+        ++failures;
+        std::fprintf(stderr, "FAIL %s as %s: %s\n", what.c_str(), format, e.what());
+    }
+}
+
+Bytes slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    const std::string s = ss.str();
+    return Bytes(s.begin(), s.end());
+}
+
+std::vector<std::string> list_files(const std::string& dir) {
+    std::vector<std::string> out;
+    if (DIR* d = opendir(dir.c_str())) {
+        while (const dirent* e = readdir(d))
+            if (e->d_name[0] != '.') out.push_back(dir + "/" + e->d_name);
+        closedir(d);
+    }
+    return out;
+}
+
+o3d::geometry::PointCloud tiny_cloud(bool normals, bool colors) {
+    o3d::geometry::PointCloud pc;
+    const double xyz[3][3] = {{0.5, -1.25, 3}, {1e-3, 2.5e4, -7}, {0, 0, 1}};
+    for (int i = 0; i < 3; ++i) {
+        pc.points.emplace_back(xyz[i][0], xyz[i][1], xyz[i][2]);
+        if (normals) pc.normals.emplace_back(0, i == 1 ? 1 : 0, i == 1 ? 0 : 1);
+        if (colors) pc.colors.emplace_back(i / 2.0, 1.0, 0.2);
+    }
+    return pc;
+}
+
+int write_seeds(const std::string& dir) {
+    struct Seed {
+        const char* format;
+        bool ascii, compressed, normals, colors;
+    };
+    const Seed seeds[] = {{"ply", false, false, true, true}, {"ply", true, false, true, true},
+                          {"ply", false, false, false, false}, {"pcd", false, false, true, true},
+                          {"pcd", true, false, true, true},   {"pcd", false, true, true, true},
+                          {"xyz", false, false, false, false}, {"xyzn", false, false, true, false},
+                          {"xyzrgb", false, false, false, true}, {"pts", false, false, false, true},
+                          {"pts", false, false, false, false}};
+    for (const Seed& s : seeds) {
+        o3d::io::WriteOptions w;
+        w.write_ascii = s.ascii;
+        w.compressed = s.compressed;
+        const Bytes b = o3d::io::write_point_cloud_to_memory(tiny_cloud(s.normals, s.colors), s.format, w);
+        const std::string sub = dir + "/" + s.format;
+        mkdir(sub.c_str(), 0755);
+        const std::string name = sub + "/written" + (s.ascii ? "_ascii" : "") + (s.compressed ? "_compressed" : "") +
+                                 (s.normals ? "_normals" : "") + (s.colors ? "_colors" : "") + "." + s.format;
+        std::ofstream(name, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), static_cast<long>(b.size()));
+        std::printf("wrote %s (%zu bytes)\n", name.c_str(), b.size());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 3 && std::strcmp(argv[1], "--write-seeds") == 0) return write_seeds(argv[2]);
+    const std::string root = argc > 1 ? argv[1] : O3D_FUZZ_CORPUS;
+    size_t seeds = 0, inputs = 0;
+    for (const char* format : kFormats) {
+        for (const std::string& path : list_files(root + "/" + format)) {
+            const Bytes seed = slurp(path);
+            ++seeds;
+            // The seed itself must read cleanly as its own format, and not crash any other reader.
+            try {
+                o3d::io::read_point_cloud_from_memory(seed.data(), seed.size(), format);
+            } catch (const std::exception& e) {
+                ++failures;
+                std::fprintf(stderr, "FAIL seed %s does not read: %s\n", path.c_str(), e.what());
+            }
+            for (const char* other : kFormats) read_one(seed, other, path);
+            Rng rng{fnv1a(path.substr(root.size()))};
+            for (int m = 0; m < kMutationsPerSeed; ++m) {
+                Bytes b = seed;
+                const size_t edits = 1 + rng.below(4);
+                for (size_t e = 0; e < edits; ++e) mutate(b, rng);
+                read_one(b, format, path + " mutation " + std::to_string(m));
+                ++inputs;
+            }
+        }
+    }
+    std::printf("%zu seeds, %zu mutated inputs, %d failures\n", seeds, inputs, failures);
+    if (seeds < 6) {
+        std::fprintf(stderr, "FAIL: expected seeds under %s/<format>/\n", root.c_str());
+        return 1;
+    }
+    return failures ? 1 : 0;
+}

@@ -367,10 +367,11 @@ static class Test
             {
                 using (var pcd = IO.ReadPointCloud(input))
                 {
-                    Check(pcd.Size > 100000, "input size " + pcd.Size);
+                    Check(pcd.Size == 3903, "input size " + pcd.Size + " (the PCD header says 3903)");
                     using (var down = pcd.VoxelDownSample(0.05))
                     {
-                        Check(down.Size > 1000 && down.Size < pcd.Size, "down size " + down.Size);
+                        // 2655: Open3D 0.20.0 voxel_down_sample(0.05) on the same file.
+                        Check(down.Size == 2655, "down size " + down.Size);
                         down.EstimateNormals(SearchParam.Hybrid(0.1, 30));
                         Check(down.HasNormals, "normals");
                         var n = down.Normals;

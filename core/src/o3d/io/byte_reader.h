@@ -11,7 +11,17 @@
 
 namespace o3d::io::detail {
 
-inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+/// @brief Whitespace as C's isspace() in the "C" locale, by table: the tokenisers' inner loop.
+struct SpaceTable {
+    bool t[256] = {};
+    constexpr SpaceTable() {
+        t[static_cast<unsigned char>(' ')] = t[static_cast<unsigned char>('\t')] = true;
+        t[static_cast<unsigned char>('\n')] = t[static_cast<unsigned char>('\r')] = true;
+        t[static_cast<unsigned char>('\v')] = t[static_cast<unsigned char>('\f')] = true;
+    }
+};
+inline constexpr SpaceTable kSpace{};
+inline bool is_space(char c) { return kSpace.t[static_cast<unsigned char>(c)]; }
 /// @brief Whitespace that does not end a line.
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -66,6 +76,21 @@ public:
         const char* s = p_;
         while (p_ < end_ && !is_space(*p_)) ++p_;
         return {s, static_cast<size_t>(p_ - s)};
+    }
+
+    /// @brief Parse the next token as a double (as parse_double() would) without scanning it
+    /// twice in the common case. On failure `tok` holds the offending token (empty at the end).
+    bool number(double& out, std::string_view& tok) {
+        while (p_ < end_ && is_space(*p_)) ++p_;
+        const char* s = p_;
+        auto [q, ec] = std::from_chars(s, end_, out);
+        if (ec == std::errc() && q != s && (q == end_ || is_space(*q))) {
+            p_ = q;
+            return true;
+        }
+        while (p_ < end_ && !is_space(*p_)) ++p_;
+        tok = std::string_view(s, static_cast<size_t>(p_ - s));
+        return parse_double(tok, out);  // the rare forms from_chars alone refuses, such as "+1"
     }
 
     /// @brief Skip one token without looking at it; false when none is left.

@@ -239,29 +239,38 @@ void read_ascii(const Input& in, const PcdHeader& h, const PcdPlan& plan, geomet
                                             std::to_string(n) + " (truncated file or wrong POINTS)");
                 continue;
             }
+            if (role[f] != 7) {
+                double v;
+                std::string_view tok;
+                if (cur.number(v, tok)) {
+                    if (role[f] <= 3) cloud.points[i][role[f] - 1] = v;
+                    else cloud.normals[i][role[f] - 4] = v;
+                    continue;
+                }
+                if (tok.empty())
+                    parse_error(in, "PCD: the text ends inside point " + std::to_string(i) + " of " +
+                                        std::to_string(n) + " (truncated file or wrong POINTS)");
+                parse_error(in, "PCD: point " + std::to_string(i) + ", field '" + field.name + "': '" +
+                                    std::string(tok.substr(0, 32)) + "' is not a number");
+            }
             const std::string_view tok = cur.token();
             if (tok.empty())
                 parse_error(in, "PCD: the text ends inside point " + std::to_string(i) + " of " + std::to_string(n) +
                                     " (truncated file or wrong POINTS)");
             bool ok = true;
-            if (role[f] == 7) {
+            {
                 // The packed colour's bits, written as the float, unsigned or signed number they form.
                 uint32_t bits = 0;
                 if (field.type == 'F') {
-                    float v;
+                    float v = 0;
                     ok = parse_float(tok, v);
                     std::memcpy(&bits, &v, 4);
                 } else {
-                    int64_t v;
+                    int64_t v = 0;
                     ok = parse_int64(tok, v) && v >= INT32_MIN && v <= static_cast<int64_t>(UINT32_MAX);
                     bits = static_cast<uint32_t>(v);
                 }
                 if (ok) cloud.colors[i] = unpack_rgb(bits);
-            } else {
-                double v;
-                ok = parse_double(tok, v);
-                if (role[f] <= 3) cloud.points[i][role[f] - 1] = v;
-                else cloud.normals[i][role[f] - 4] = v;
             }
             if (!ok)
                 parse_error(in, "PCD: point " + std::to_string(i) + ", field '" + field.name + "': '" +

@@ -316,19 +316,20 @@ private:
     void walk_record(const PlyElement& e, uint64_t r, const VertexPlan* plan, double* values) {
         for (size_t p = 0; p < e.props.size(); ++p) {
             const PlyProperty& prop = e.props[p];
-            const std::string_view tok = cur_.token();
-            if (tok.empty()) truncated_at(e, r);
-            if (!prop.is_list) {
-                if (plan) {
-                    const int s = plan->prop_slot[p];
-                    if (s >= 0) {
-                        double v;
-                        if (!parse_double(tok, v)) bad_number(e, r, prop, tok);
-                        values[s] = s >= kRed ? v / color_divisor(prop.type) : v;
-                    }
+            if (!prop.is_list && plan && plan->prop_slot[p] >= 0) {
+                const int s = plan->prop_slot[p];
+                double v;
+                std::string_view tok;
+                if (!cur_.number(v, tok)) {
+                    if (tok.empty()) truncated_at(e, r);
+                    bad_number(e, r, prop, tok);
                 }
+                values[s] = s >= kRed ? v / color_divisor(prop.type) : v;
                 continue;
             }
+            const std::string_view tok = cur_.token();
+            if (tok.empty()) truncated_at(e, r);
+            if (!prop.is_list) continue;
             int64_t len;
             if (!parse_int64(tok, len)) bad_number(e, r, prop, tok);
             if (len < 0)

@@ -27,8 +27,9 @@ std::string quote(std::string_view s) { return "'" + std::string(s.substr(0, 40)
 /// sscanf-based readers do.
 bool parse_row(std::string_view line, int want, double* v) {
     TextCursor c(line);
+    std::string_view tok;
     for (int k = 0; k < want; ++k)
-        if (!parse_double(c.token(), v[k])) return false;
+        if (!c.number(v[k], tok)) return false;
     return true;
 }
 

@@ -324,9 +324,10 @@ class O3dTest {
     void figure1OnCloudBin0() throws Exception {
         File input = dataFile("open3d/Feature/cloud_bin_0.pcd");
         try (PointCloud pcd = IO.readPointCloud(input.getPath())) {
-            assertTrue(pcd.size() > 100000, "input size " + pcd.size());
+            assertEquals(3903, pcd.size(), "input size (the PCD header says 3903 points)");
             try (PointCloud down = pcd.voxelDownSample(0.05)) {
-                assertTrue(down.size() > 1000 && down.size() < pcd.size(), "down size " + down.size());
+                // 2655: Open3D 0.20.0 voxel_down_sample(0.05) on the same file.
+                assertEquals(2655, down.size(), "down size");
                 down.estimateNormals(SearchParam.hybrid(0.1, 30));
                 assertTrue(down.hasNormals());
                 double[] n = down.getNormals();

@@ -49,7 +49,11 @@ def test_point_to_plane_recovers_transform(pair):
 
 def test_scaling_estimation(pair):
     source, _, _ = pair
-    target = o3d.geometry.PointCloud(np.asarray(source.points) * 1.1)
+    # Scaled about the centroid: scaling about the origin moves points up to 0.2 away, and from
+    # identity both Open3D 0.20 and o3d then settle in the same local minimum for some samples.
+    pts = np.asarray(source.points)
+    c = pts.mean(axis=0)
+    target = o3d.geometry.PointCloud((pts - c) * 1.1 + c)
     result = reg.registration_icp(source, target, 0.5, estimation_method=reg.TransformationEstimationPointToPoint(True),
                                   criteria=reg.ICPConvergenceCriteria(max_iteration=200))
     np.testing.assert_allclose(np.linalg.det(result.transformation[:3, :3]), 1.1 ** 3, rtol=1e-3)

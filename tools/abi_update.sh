@@ -4,7 +4,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 LIB=$(readlink -f "$BUILD/capi/libo3d.so")
-abidw --headers-dir capi/include/o3d --drop-private-types --no-corpus-path --short-locs --no-comp-dir-path \
-      --out-file abi/libo3d.abi.xml "$LIB"
-gzip -9nf abi/libo3d.abi.xml
-echo "abi_update: wrote abi/libo3d.abi.xml.gz from $LIB"
+# --exported-interfaces-only keeps the baseline to what o3d_* functions expose (the opaque structs'
+# C++ insides would otherwise fill megabytes with std:: and Eigen types).
+abidw --headers-dir capi/include/o3d --drop-private-types --exported-interfaces-only --drop-undefined-syms \
+      --no-corpus-path --short-locs --no-comp-dir-path --out-file abi/libo3d.abi "$LIB"
+echo "abi_update: wrote abi/libo3d.abi from $LIB"

@@ -38,7 +38,7 @@ build_sanitized() {
 # Sanitized run: the C API suites (incl. dlopen), the parser fuzz replay and the core tests.
 ctest_sanitized() {
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$JOBS" --timeout 900 -L 'capi|fuzz|core'
+    ctest --test-dir build-asan --output-on-failure -j"$JOBS" --timeout 900 -L 'capi|fuzz|core|cpp'
 }
 abi_check() { tools/abi_check.sh build; }
 coverage_check() { python3 tools/check_binding_coverage.py --lib build/capi/libo3d.so; }

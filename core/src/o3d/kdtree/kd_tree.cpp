@@ -179,8 +179,9 @@ SearchResult KDTree::search_batch(const std::vector<Eigen::Vector3d>& queries, c
             const size_t end = std::min(nq, static_cast<size_t>(c + 1) * kChunk);
             for (size_t j = static_cast<size_t>(c) * kChunk; j < end; ++j) {
                 const size_t q = order[j];
-                impl_->knn(queries[q], k, std::numeric_limits<double>::infinity(), &result.indices[q * k],
-                           &result.distances2[q * k]);
+                // data() + offset, not &v[i]: with an empty tree k == 0 and the vectors are empty.
+                impl_->knn(queries[q], k, std::numeric_limits<double>::infinity(), result.indices.data() + q * k,
+                           result.distances2.data() + q * k);
             }
         }
         return result;

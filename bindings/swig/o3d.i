@@ -91,9 +91,15 @@ static uint32_t o3dx_sizeof_icp_options(void) { return (uint32_t)sizeof(o3d_icp_
 %apply double *O3D_OUT { double *out, double out[ANY], double out_min[ANY], double out_max[ANY] }
 %apply int32_t *O3D_SOUT { int32_t *out }
 %apply size_t *O3D_SOUT { size_t *out_n }
+/* point-cloud tools: boxes in, plane / mean / covariance out, index and label buffers out */
+%apply const double *O3D_IN { const double min_bound[ANY], const double max_bound[ANY] }
+%apply double *O3D_OUT { double out_plane[ANY], double out_mean[ANY], double out_covariance[ANY] }
+%apply int32_t *O3D_OUT { int32_t *out_indices, int32_t *out_labels }
 %include "o3d/pointcloud.h"
 %clear double *out;
 %clear int32_t *out;
+%clear int32_t *out_indices;
+%clear int32_t *out_labels;
 
 /* ---- kdtree.h ------------------------------------------------------------------------------ */
 %apply const double *O3D_IN { const double *queries }

@@ -275,5 +275,120 @@ namespace O3d
             GC.KeepAlive(target); GC.KeepAlive(this);
             return result;
         }
+
+        // ---- filters, segmentation, statistics ----------------------------------------------------------
+
+        // Indices are at most Size, so a Size-long buffer always fits; trimmed to the reported count.
+        static int[] Trim(int[] indices, ulong n)
+        {
+            if (n == (ulong)indices.Length) return indices;
+            var r = new int[n];
+            Array.Copy(indices, r, (long)n);
+            return r;
+        }
+
+        delegate int OutlierFn(out IntPtr out_, IntPtr pc, int a, double b, int[] indices, ulong capacity, out ulong n);
+
+        OutlierRemovalResult RemoveOutliers(OutlierFn fn, int a, double b)
+        {
+            ulong cap = (ulong)Size;
+            var indices = new int[cap];
+            IntPtr h;
+            ulong n;
+            fn(out h, Handle, a, b, indices, cap, out n);
+            GC.KeepAlive(this);
+            return new OutlierRemovalResult(new PointCloud(h), Trim(indices, n));
+        }
+
+        /// <summary>
+        /// Statistical outlier removal (o3d.geometry.PointCloud.remove_statistical_outlier): drop the points
+        /// whose mean distance to their <paramref name="nbNeighbors"/> nearest points exceeds the cloud's mean
+        /// of that distance by more than <paramref name="stdRatio"/> standard deviations.
+        /// </summary>
+        /// <exception cref="O3dException">InvalidArgument when nbNeighbors &lt; 1, stdRatio &lt;= 0 or the cloud is empty.</exception>
+        public OutlierRemovalResult RemoveStatisticalOutlier(int nbNeighbors, double stdRatio)
+        {
+            return RemoveOutliers(O3dNative.o3d_pointcloud_remove_statistical_outlier, nbNeighbors, stdRatio);
+        }
+
+        /// <summary>
+        /// Radius outlier removal (remove_radius_outlier): keep the points with at least
+        /// <paramref name="nbPoints"/> other points closer than <paramref name="radius"/>.
+        /// </summary>
+        /// <exception cref="O3dException">InvalidArgument when nbPoints &lt; 1, radius &lt;= 0 or the cloud is empty.</exception>
+        public OutlierRemovalResult RemoveRadiusOutlier(int nbPoints, double radius)
+        {
+            return RemoveOutliers(O3dNative.o3d_pointcloud_remove_radius_outlier, nbPoints, radius);
+        }
+
+        /// <summary>
+        /// New cloud with the points inside the box <paramref name="min"/>..<paramref name="max"/> (bounds
+        /// inclusive), or outside it when <paramref name="invert"/> (o3d.geometry.PointCloud.crop with an
+        /// AxisAlignedBoundingBox).
+        /// </summary>
+        public PointCloud CropAabb(double[] min, double[] max, bool invert = false)
+        {
+            IntPtr h;
+            O3dNative.o3d_pointcloud_crop_aabb(out h, Handle, Checks.Fixed(min, 3, "min", false),
+                                               Checks.Fixed(max, 3, "max", false), invert ? 1 : 0);
+            GC.KeepAlive(this);
+            return new PointCloud(h);
+        }
+
+        /// <summary>
+        /// RANSAC plane segmentation (segment_plane). Deterministic for a <paramref name="seed"/>, whatever
+        /// the thread count.
+        /// </summary>
+        /// <exception cref="O3dException">InvalidArgument on a negative threshold, ransacN &lt; 3,
+        /// numIterations &lt; 1, probability outside (0, 1] or fewer than ransacN points; NotConverged when
+        /// every sample was degenerate.</exception>
+        public PlaneSegmentationResult SegmentPlane(double distanceThreshold, int ransacN, int numIterations,
+                                                    double probability = 0.99999999, ulong seed = 0)
+        {
+            ulong cap = (ulong)Size;
+            var plane = new double[4];
+            var inliers = new int[cap];
+            ulong n;
+            O3dNative.o3d_pointcloud_segment_plane(Handle, distanceThreshold, ransacN, numIterations, probability, seed,
+                                                   plane, inliers, cap, out n);
+            GC.KeepAlive(this);
+            return new PlaneSegmentationResult(plane, Trim(inliers, n));
+        }
+
+        /// <summary>
+        /// DBSCAN (cluster_dbscan): one label per point, clusters 0, 1, ... in order of their lowest point
+        /// index, -1 for noise.
+        /// </summary>
+        public int[] ClusterDbscan(double eps, int minPoints)
+        {
+            ulong cap = (ulong)Size;
+            var labels = new int[cap];
+            ulong n;
+            O3dNative.o3d_pointcloud_cluster_dbscan(Handle, eps, minPoints, labels, cap, out n);
+            GC.KeepAlive(this);
+            return Trim(labels, n);
+        }
+
+        /// <summary>Mean and covariance (row-major 3x3, divided by N) of the points.</summary>
+        /// <exception cref="O3dException">InvalidArgument on an empty cloud.</exception>
+        public MeanAndCovariance ComputeMeanAndCovariance()
+        {
+            var mean = new double[3];
+            var covariance = new double[9];
+            O3dNative.o3d_pointcloud_compute_mean_and_covariance(Handle, mean, covariance);
+            GC.KeepAlive(this);
+            return new MeanAndCovariance(mean, covariance);
+        }
+
+        /// <summary>Mahalanobis distance of each point to the cloud's distribution.</summary>
+        public double[] ComputeMahalanobisDistance()
+        {
+            ulong cap = (ulong)Size;
+            var result = new double[cap];
+            ulong n;
+            O3dNative.o3d_pointcloud_compute_mahalanobis_distance(Handle, result, cap, out n);
+            GC.KeepAlive(this);
+            return result;
+        }
     }
 }

@@ -86,6 +86,25 @@ static class Test
         return q;
     }
 
+    // ---- fixtures of the point-cloud tools tests (the same in O3dTest.java) ----
+    // A 10 x 10 grid (spacing 0.1) at z = 0, indices 0..99, then two far outliers (100, 101).
+    static double[] GridWithOutliers()
+    {
+        var p = new List<double>();
+        for (int i = 0; i < 10; i++)
+            for (int j = 0; j < 10; j++) { p.Add(i * 0.1); p.Add(j * 0.1); p.Add(0); }
+        p.AddRange(new double[] { 5, 5, 5, -5, -5, 5 });
+        return p.ToArray();
+    }
+    static int[] Range(int start, int count) { return Enumerable.Range(start, count).ToArray(); }
+    // Points of a 3 x 3 x 3 grid (spacing 0.1) around (cx, cy, cz).
+    static IEnumerable<double> Blob(double cx, double cy, double cz)
+    {
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                for (int k = 0; k < 3; k++) { yield return cx + i * 0.1; yield return cy + j * 0.1; yield return cz + k * 0.1; }
+    }
+
     static int Main()
     {
         Run("version", () =>
@@ -357,6 +376,119 @@ static class Test
             Library.SetLogHandler(null); // back to stderr
             Library.VerbosityLevel = lv;
             Console.WriteLine("  (log handler received " + lines.Count + " line(s))");
+        });
+
+        Run("remove statistical / radius outliers", () =>
+        {
+            var pts = GridWithOutliers();
+            using (var pc = new PointCloud(pts))
+            {
+                using (var r = pc.RemoveStatisticalOutlier(8, 2.0))
+                {
+                    Check(r.Indices.SequenceEqual(Range(0, 100)), "statistical: kept indices " + string.Join(",", r.Indices));
+                    Check(r.Cloud.Size == 100, "statistical: kept cloud size");
+                    AllNear(r.Cloud.Points, pts.Take(300).ToArray(), 0, "statistical: kept points");
+                }
+                using (var r = pc.RemoveRadiusOutlier(3, 0.15))
+                {
+                    Check(r.Indices.SequenceEqual(Range(0, 100)), "radius: kept indices " + string.Join(",", r.Indices));
+                    AllNear(r.Cloud.Points, pts.Take(300).ToArray(), 0, "radius: kept points");
+                }
+                // every grid point has at most 8 others within 0.15: nothing survives nb_points = 9
+                using (var r = pc.RemoveRadiusOutlier(9, 0.15))
+                {
+                    Check(r.Indices.Length == 0 && r.Cloud.Size == 0, "radius: none kept");
+                }
+                Check(pc.Size == 102, "input untouched");
+                ThrowsStatus(Status.InvalidArgument, () => pc.RemoveStatisticalOutlier(0, 2.0), "nb_neighbors 0");
+                ThrowsStatus(Status.InvalidArgument, () => pc.RemoveStatisticalOutlier(8, -1), "negative std_ratio");
+                ThrowsStatus(Status.InvalidArgument, () => pc.RemoveRadiusOutlier(3, 0), "radius 0");
+                ThrowsStatus(Status.InvalidArgument, () => pc.RemoveRadiusOutlier(0, 0.1), "nb_points 0");
+            }
+            using (var empty = new PointCloud())
+                ThrowsStatus(Status.InvalidArgument, () => empty.RemoveStatisticalOutlier(8, 2.0), "empty cloud");
+        });
+
+        Run("crop to an axis-aligned box (inclusive, invert)", () =>
+        {
+            var pts = new double[] { 0, 0, 0,  1, 1, 1,  0.5, 0.5, 0.5,  2, 0, 0,  1, 1, 1.0001,  0.5, -1e-9, 0.5 };
+            using (var pc = new PointCloud(pts))
+            {
+                pc.Colors = Enumerable.Range(0, 18).Select(i => i / 18.0).ToArray();
+                double[] min = { 0, 0, 0 }, max = { 1, 1, 1 };
+                using (var inside = pc.CropAabb(min, max))
+                {
+                    AllNear(inside.Points, new double[] { 0, 0, 0, 1, 1, 1, 0.5, 0.5, 0.5 }, 0, "inside (bounds inclusive)");
+                    AllNear(inside.Colors, Enumerable.Range(0, 9).Select(i => i / 18.0).ToArray(), 0, "colors follow");
+                }
+                using (var outside = pc.CropAabb(min, max, invert: true))
+                    AllNear(outside.Points, new double[] { 2, 0, 0, 1, 1, 1.0001, 0.5, -1e-9, 0.5 }, 0, "outside");
+                ThrowsStatus(Status.InvalidArgument, () => pc.CropAabb(max, min), "min > max");
+                ThrowsStatus(Status.InvalidArgument, () => pc.CropAabb(new double[] { 0, 0, double.NaN }, max), "NaN bound");
+                Throws<ArgumentException>(() => pc.CropAabb(new double[] { 0, 0 }, max), "short bound");
+                Throws<ArgumentNullException>(() => pc.CropAabb(null, max), "null bound");
+            }
+        });
+
+        Run("segment_plane recovers a known plane", () =>
+        {
+            // z = 0.5 x + 0.2 y + 1  <=>  0.5 x + 0.2 y - z + 1 = 0; 400 inliers then 20 points >= 1.7 off it
+            var p = new List<double>();
+            for (int i = 0; i < 20; i++)
+                for (int j = 0; j < 20; j++) { double x = i * 0.1, y = j * 0.1; p.Add(x); p.Add(y); p.Add(0.5 * x + 0.2 * y + 1); }
+            for (int k = 0; k < 20; k++) { double x = (k % 5) * 0.4, y = (k / 5) * 0.5; p.Add(x); p.Add(y); p.Add(0.5 * x + 0.2 * y + 3 + 0.1 * k); }
+            double norm = Math.Sqrt(0.25 + 0.04 + 1);
+            var expected = new[] { 0.5 / norm, 0.2 / norm, -1 / norm, 1 / norm };
+            using (var pc = new PointCloud(p.ToArray()))
+            {
+                var r = pc.SegmentPlane(0.01, 3, 1000, 0.99999999, 42);
+                Check(r.Inliers.SequenceEqual(Range(0, 400)), "inliers " + r.Inliers.Length);
+                Check(r.Plane.Length == 4, "plane length");
+                double sign = r.Plane[2] < 0 ? 1 : -1; // normal up to sign
+                AllNear(r.Plane.Select(v => v * sign).ToArray(), expected, 1e-9, "plane");
+                var again = pc.SegmentPlane(0.01, 3, 1000, 0.99999999, 42);
+                AllNear(again.Plane, r.Plane, 0, "same seed, same plane");
+                Check(again.Inliers.SequenceEqual(r.Inliers), "same seed, same inliers");
+                ThrowsStatus(Status.InvalidArgument, () => pc.SegmentPlane(0.01, 2, 1000), "ransac_n 2");
+                ThrowsStatus(Status.InvalidArgument, () => pc.SegmentPlane(0.01, 3, 0), "0 iterations");
+                ThrowsStatus(Status.InvalidArgument, () => pc.SegmentPlane(-0.01, 3, 100), "negative threshold");
+                ThrowsStatus(Status.InvalidArgument, () => pc.SegmentPlane(0.01, 3, 100, 1.5), "probability > 1");
+            }
+        });
+
+        Run("cluster_dbscan on separated blobs", () =>
+        {
+            // blob at (10, 0, 0): 0..26, a lone noise point: 27, blob at the origin: 28..54
+            var pts = Blob(10, 0, 0).Concat(new double[] { 5, 5, 5 }).Concat(Blob(0, 0, 0)).ToArray();
+            using (var pc = new PointCloud(pts))
+            {
+                var labels = pc.ClusterDbscan(0.15, 3);
+                Check(labels.Length == 55, "one label per point");
+                for (int i = 0; i < 55; i++)
+                    Check(labels[i] == (i < 27 ? 0 : i == 27 ? -1 : 1), "label[" + i + "] = " + labels[i]);
+                Check(pc.ClusterDbscan(0.05, 1).SequenceEqual(Range(0, 55)), "eps below the spacing: singletons");
+                ThrowsStatus(Status.InvalidArgument, () => pc.ClusterDbscan(0, 3), "eps 0");
+                ThrowsStatus(Status.InvalidArgument, () => pc.ClusterDbscan(0.1, -1), "min_points < 0");
+            }
+        });
+
+        Run("mean, covariance and Mahalanobis distance (analytic)", () =>
+        {
+            // (1, 2, 3) +- (1, 0, 0), (0, 2, 0), (0, 0, 3): mean (1, 2, 3), covariance diag(1/3, 4/3, 3)
+            var pts = new double[] { 2, 2, 3, 0, 2, 3, 1, 4, 3, 1, 0, 3, 1, 2, 6, 1, 2, 0 };
+            using (var pc = new PointCloud(pts))
+            {
+                var mc = pc.ComputeMeanAndCovariance();
+                AllNear(mc.Mean, new double[] { 1, 2, 3 }, 1e-12, "mean");
+                AllNear(mc.Covariance, new double[] { 1.0 / 3, 0, 0, 0, 4.0 / 3, 0, 0, 0, 3 }, 1e-12, "covariance");
+                var d = pc.ComputeMahalanobisDistance();
+                AllNear(d, Enumerable.Repeat(Math.Sqrt(3), 6).ToArray(), 1e-9, "mahalanobis");
+            }
+            using (var empty = new PointCloud())
+            {
+                ThrowsStatus(Status.InvalidArgument, () => empty.ComputeMeanAndCovariance(), "empty mean");
+                ThrowsStatus(Status.InvalidArgument, () => empty.ComputeMahalanobisDistance(), "empty mahalanobis");
+            }
         });
 
         Run("Figure 1 on cloud_bin_0.pcd", () =>

@@ -174,6 +174,51 @@ O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(const o3d_pointcl
                                                                size_t capacity, size_t* out_n,
                                                                int32_t num_threads);
 
+/* ---- Point-cloud tools (o3d.geometry.PointCloud filters, segmentation, statistics) ----
+ * Functions that also return indices write them to a caller buffer: `out_indices` holds `capacity`
+ * int32 values, `*out_n` always gets the count (at most the cloud's size, so capacity = size always
+ * fits), O3D_ERROR_BUFFER_TOO_SMALL when it does not fit; `out_indices` NULL skips them. */
+
+/**
+ * @brief Statistical outlier removal: drop points whose mean distance to their `nb_neighbors` nearest
+ * points is above the cloud's mean of that distance + `std_ratio` standard deviations.
+ * Writes the kept cloud to `*out` and the kept indices (ascending). @see remove_statistical_outlier
+ */
+O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                                             int32_t nb_neighbors, double std_ratio,
+                                                             int32_t* out_indices, size_t capacity, size_t* out_n);
+/**
+ * @brief Radius outlier removal: keep points with at least `nb_points` other points within `radius`.
+ * Writes the kept cloud and the kept indices (ascending). @see remove_radius_outlier
+ */
+O3D_API o3d_status o3d_pointcloud_remove_radius_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                                        int32_t nb_points, double radius, int32_t* out_indices,
+                                                        size_t capacity, size_t* out_n);
+/** @brief New cloud with the points inside the box [min_bound, max_bound] (outside when invert != 0). */
+O3D_API o3d_status o3d_pointcloud_crop_aabb(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                            const double min_bound[3], const double max_bound[3], int32_t invert);
+/**
+ * @brief RANSAC plane: `out_plane` gets (a, b, c, d) with a x + b y + c z + d = 0 and unit (a, b, c);
+ * the inlier indices (ascending) go to `out_indices`. Same seed → same result on any thread count.
+ * @see segment_plane
+ */
+O3D_API o3d_status o3d_pointcloud_segment_plane(const o3d_pointcloud_t* pc, double distance_threshold,
+                                                int32_t ransac_n, int32_t num_iterations, double probability,
+                                                uint64_t seed, double out_plane[4], int32_t* out_indices,
+                                                size_t capacity, size_t* out_n);
+/**
+ * @brief DBSCAN: one label per point in `out_labels` (capacity values): clusters 0, 1, ... in order of
+ * their lowest point index, -1 for noise. `*out_n` gets the point count. @see cluster_dbscan
+ */
+O3D_API o3d_status o3d_pointcloud_cluster_dbscan(const o3d_pointcloud_t* pc, double eps, int32_t min_points,
+                                                 int32_t* out_labels, size_t capacity, size_t* out_n);
+/** @brief Mean (3) and covariance (row-major 3x3, divided by N) of the points. Empty cloud → error. */
+O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(const o3d_pointcloud_t* pc, double out_mean[3],
+                                                              double out_covariance[9]);
+/** @brief Mahalanobis distance of each point to the cloud's distribution, into `out` (capacity doubles). */
+O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(const o3d_pointcloud_t* pc, double* out,
+                                                               size_t capacity, size_t* out_n);
+
 O3D_END_DECL
 
 #endif /* O3D_POINTCLOUD_H */

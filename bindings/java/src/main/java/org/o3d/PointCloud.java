@@ -338,4 +338,117 @@ public final class PointCloud extends NativeResource {
         Reference.reachabilityFence(this);
         return out;
     }
+
+    // ---- filters, segmentation, statistics ---------------------------------------------------------
+
+    /** Indices are at most size(), so a size()-long buffer always fits; trimmed to the reported count. */
+    private int capacity() {
+        return Math.toIntExact(size());
+    }
+
+    private static int[] trim(int[] values, long n) {
+        return n == values.length ? values : java.util.Arrays.copyOf(values, (int) n);
+    }
+
+    private interface OutlierFn {
+        int call(long[] out, long pc, int a, double b, int[] indices, long capacity, long[] outN);
+    }
+
+    private OutlierRemovalResult removeOutliers(OutlierFn fn, int a, double b) {
+        int cap = capacity();
+        int[] indices = new int[cap];
+        long[] h = new long[1];
+        long[] n = new long[1];
+        fn.call(h, handle(), a, b, indices, cap, n);
+        Reference.reachabilityFence(this);
+        return new OutlierRemovalResult(wrap(h), trim(indices, n[0]));
+    }
+
+    /**
+     * Statistical outlier removal (o3d.geometry.PointCloud.remove_statistical_outlier): drop the points
+     * whose mean distance to their {@code nbNeighbors} nearest points exceeds the cloud's mean of that
+     * distance by more than {@code stdRatio} standard deviations.
+     * @throws O3dException INVALID_ARGUMENT when nbNeighbors &lt; 1, stdRatio &lt;= 0 or the cloud is empty
+     */
+    public OutlierRemovalResult removeStatisticalOutlier(int nbNeighbors, double stdRatio) {
+        return removeOutliers(O3dNative::o3d_pointcloud_remove_statistical_outlier, nbNeighbors, stdRatio);
+    }
+
+    /**
+     * Radius outlier removal (remove_radius_outlier): keep the points with at least {@code nbPoints}
+     * other points closer than {@code radius}.
+     * @throws O3dException INVALID_ARGUMENT when nbPoints &lt; 1, radius &lt;= 0 or the cloud is empty
+     */
+    public OutlierRemovalResult removeRadiusOutlier(int nbPoints, double radius) {
+        return removeOutliers(O3dNative::o3d_pointcloud_remove_radius_outlier, nbPoints, radius);
+    }
+
+    /**
+     * New cloud with the points inside the box {@code min}..{@code max} (bounds inclusive), or outside
+     * it when {@code invert} (o3d.geometry.PointCloud.crop with an AxisAlignedBoundingBox).
+     */
+    public PointCloud cropAabb(double[] min, double[] max, boolean invert) {
+        long[] h = new long[1];
+        O3dNative.o3d_pointcloud_crop_aabb(h, handle(), fixed(min, 3, "min", false), fixed(max, 3, "max", false),
+                invert ? 1 : 0);
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    public PointCloud cropAabb(double[] min, double[] max) { return cropAabb(min, max, false); }
+
+    /**
+     * RANSAC plane segmentation (segment_plane), deterministic for a seed whatever the thread count.
+     * The seed is an unsigned 64-bit value.
+     * @throws O3dException INVALID_ARGUMENT on a negative threshold, ransacN &lt; 3, numIterations &lt; 1,
+     *     probability outside (0, 1] or fewer than ransacN points; NOT_CONVERGED when every sample was degenerate
+     */
+    public PlaneSegmentationResult segmentPlane(double distanceThreshold, int ransacN, int numIterations,
+            double probability, long seed) {
+        int cap = capacity();
+        double[] plane = new double[4];
+        int[] inliers = new int[cap];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_segment_plane(handle(), distanceThreshold, ransacN, numIterations, probability, seed,
+                plane, inliers, cap, n);
+        Reference.reachabilityFence(this);
+        return new PlaneSegmentationResult(plane, trim(inliers, n[0]));
+    }
+
+    /** {@link #segmentPlane(double, int, int, double, long)} with Open3D's probability 0.99999999 and seed 0. */
+    public PlaneSegmentationResult segmentPlane(double distanceThreshold, int ransacN, int numIterations) {
+        return segmentPlane(distanceThreshold, ransacN, numIterations, 0.99999999, 0);
+    }
+
+    /**
+     * DBSCAN (cluster_dbscan): one label per point, clusters 0, 1, ... in order of their lowest point
+     * index, -1 for noise.
+     */
+    public int[] clusterDbscan(double eps, int minPoints) {
+        int cap = capacity();
+        int[] labels = new int[cap];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_cluster_dbscan(handle(), eps, minPoints, labels, cap, n);
+        Reference.reachabilityFence(this);
+        return trim(labels, n[0]);
+    }
+
+    /** Mean and covariance (row-major 3x3, divided by N) of the points. @throws O3dException on an empty cloud */
+    public MeanAndCovariance computeMeanAndCovariance() {
+        double[] mean = new double[3];
+        double[] covariance = new double[9];
+        O3dNative.o3d_pointcloud_compute_mean_and_covariance(handle(), mean, covariance);
+        Reference.reachabilityFence(this);
+        return new MeanAndCovariance(mean, covariance);
+    }
+
+    /** Mahalanobis distance of each point to the cloud's distribution. */
+    public double[] computeMahalanobisDistance() {
+        int cap = capacity();
+        double[] out = new double[cap];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_compute_mahalanobis_distance(handle(), out, cap, n);
+        Reference.reachabilityFence(this);
+        return out;
+    }
 }

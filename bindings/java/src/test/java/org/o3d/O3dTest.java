@@ -320,6 +320,167 @@ class O3dTest {
         Library.setVerbosityLevel(lv);
     }
 
+    // ---- point-cloud tools (the same fixtures as Test.cs) ----
+
+    /** A 10 x 10 grid (spacing 0.1) at z = 0, indices 0..99, then two far outliers (100, 101). */
+    static double[] gridWithOutliers() {
+        double[] p = new double[3 * 102];
+        int k = 0;
+        for (int i = 0; i < 10; i++)
+            for (int j = 0; j < 10; j++) {
+                p[k++] = i * 0.1;
+                p[k++] = j * 0.1;
+                p[k++] = 0;
+            }
+        double[] far = {5, 5, 5, -5, -5, 5};
+        System.arraycopy(far, 0, p, k, 6);
+        return p;
+    }
+
+    static int[] range(int start, int count) {
+        return IntStream.range(start, start + count).toArray();
+    }
+
+    /** A 3 x 3 x 3 grid (spacing 0.1) around (cx, cy, cz). */
+    static double[] blob(double cx, double cy, double cz) {
+        double[] p = new double[81];
+        int n = 0;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                for (int k = 0; k < 3; k++) {
+                    p[n++] = cx + i * 0.1;
+                    p[n++] = cy + j * 0.1;
+                    p[n++] = cz + k * 0.1;
+                }
+        return p;
+    }
+
+    @Test
+    void removeStatisticalAndRadiusOutliers() {
+        double[] pts = gridWithOutliers();
+        double[] grid = Arrays.copyOf(pts, 300);
+        try (PointCloud pc = new PointCloud(pts)) {
+            try (OutlierRemovalResult r = pc.removeStatisticalOutlier(8, 2.0)) {
+                assertArrayEquals(range(0, 100), r.indices, "statistical: kept indices");
+                assertEquals(100, r.cloud.size());
+                assertArrayEquals(grid, r.cloud.getPoints(), 0.0);
+            }
+            try (OutlierRemovalResult r = pc.removeRadiusOutlier(3, 0.15)) {
+                assertArrayEquals(range(0, 100), r.indices, "radius: kept indices");
+                assertArrayEquals(grid, r.cloud.getPoints(), 0.0);
+            }
+            // every grid point has at most 8 others within 0.15: nothing survives nb_points = 9
+            try (OutlierRemovalResult r = pc.removeRadiusOutlier(9, 0.15)) {
+                assertEquals(0, r.indices.length);
+                assertEquals(0, r.cloud.size());
+            }
+            assertEquals(102, pc.size(), "input untouched");
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.removeStatisticalOutlier(0, 2.0));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.removeStatisticalOutlier(8, -1));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.removeRadiusOutlier(3, 0));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.removeRadiusOutlier(0, 0.1));
+        }
+        try (PointCloud empty = new PointCloud()) {
+            assertStatus(Status.INVALID_ARGUMENT, () -> empty.removeStatisticalOutlier(8, 2.0));
+        }
+    }
+
+    @Test
+    void cropAabbInclusiveAndInvert() {
+        double[] pts = {0, 0, 0, 1, 1, 1, 0.5, 0.5, 0.5, 2, 0, 0, 1, 1, 1.0001, 0.5, -1e-9, 0.5};
+        try (PointCloud pc = new PointCloud(pts)) {
+            double[] colors = new double[18];
+            for (int i = 0; i < 18; i++) colors[i] = i / 18.0;
+            pc.setColors(colors);
+            double[] min = {0, 0, 0}, max = {1, 1, 1};
+            try (PointCloud inside = pc.cropAabb(min, max)) {
+                assertArrayEquals(new double[] {0, 0, 0, 1, 1, 1, 0.5, 0.5, 0.5}, inside.getPoints(), 0.0, "bounds inclusive");
+                assertArrayEquals(Arrays.copyOf(colors, 9), inside.getColors(), 0.0, "colors follow");
+            }
+            try (PointCloud outside = pc.cropAabb(min, max, true)) {
+                assertArrayEquals(new double[] {2, 0, 0, 1, 1, 1.0001, 0.5, -1e-9, 0.5}, outside.getPoints(), 0.0);
+            }
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.cropAabb(max, min));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.cropAabb(new double[] {0, 0, Double.NaN}, max));
+            assertThrows(IllegalArgumentException.class, () -> pc.cropAabb(new double[] {0, 0}, max));
+        }
+    }
+
+    @Test
+    void segmentPlaneRecoversAKnownPlane() {
+        // z = 0.5 x + 0.2 y + 1  <=>  0.5 x + 0.2 y - z + 1 = 0; 400 inliers then 20 points >= 1.7 off it
+        double[] p = new double[3 * 420];
+        int n = 0;
+        for (int i = 0; i < 20; i++)
+            for (int j = 0; j < 20; j++) {
+                double x = i * 0.1, y = j * 0.1;
+                p[n++] = x;
+                p[n++] = y;
+                p[n++] = 0.5 * x + 0.2 * y + 1;
+            }
+        for (int k = 0; k < 20; k++) {
+            double x = (k % 5) * 0.4, y = (k / 5) * 0.5;
+            p[n++] = x;
+            p[n++] = y;
+            p[n++] = 0.5 * x + 0.2 * y + 3 + 0.1 * k;
+        }
+        double norm = Math.sqrt(0.25 + 0.04 + 1);
+        double[] expected = {0.5 / norm, 0.2 / norm, -1 / norm, 1 / norm};
+        try (PointCloud pc = new PointCloud(p)) {
+            PlaneSegmentationResult r = pc.segmentPlane(0.01, 3, 1000, 0.99999999, 42);
+            assertArrayEquals(range(0, 400), r.inliers);
+            assertEquals(4, r.plane.length);
+            double sign = r.plane[2] < 0 ? 1 : -1; // normal up to sign
+            double[] signed = Arrays.stream(r.plane).map(v -> v * sign).toArray();
+            assertArrayEquals(expected, signed, 1e-9);
+            PlaneSegmentationResult again = pc.segmentPlane(0.01, 3, 1000, 0.99999999, 42);
+            assertArrayEquals(r.plane, again.plane, 0.0, "same seed, same plane");
+            assertArrayEquals(r.inliers, again.inliers, "same seed, same inliers");
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.segmentPlane(0.01, 2, 1000));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.segmentPlane(0.01, 3, 0));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.segmentPlane(-0.01, 3, 100));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.segmentPlane(0.01, 3, 100, 1.5, 0));
+        }
+    }
+
+    @Test
+    void clusterDbscanOnSeparatedBlobs() {
+        // blob at (10, 0, 0): 0..26, a lone noise point: 27, blob at the origin: 28..54
+        double[] pts = new double[3 * 55];
+        System.arraycopy(blob(10, 0, 0), 0, pts, 0, 81);
+        pts[81] = 5;
+        pts[82] = 5;
+        pts[83] = 5;
+        System.arraycopy(blob(0, 0, 0), 0, pts, 84, 81);
+        try (PointCloud pc = new PointCloud(pts)) {
+            int[] labels = pc.clusterDbscan(0.15, 3);
+            int[] expected = IntStream.range(0, 55).map(i -> i < 27 ? 0 : i == 27 ? -1 : 1).toArray();
+            assertArrayEquals(expected, labels);
+            assertArrayEquals(range(0, 55), pc.clusterDbscan(0.05, 1), "eps below the spacing: singletons");
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.clusterDbscan(0, 3));
+            assertStatus(Status.INVALID_ARGUMENT, () -> pc.clusterDbscan(0.1, -1));
+        }
+    }
+
+    @Test
+    void meanCovarianceAndMahalanobisAnalytic() {
+        // (1, 2, 3) +- (1, 0, 0), (0, 2, 0), (0, 0, 3): mean (1, 2, 3), covariance diag(1/3, 4/3, 3)
+        double[] pts = {2, 2, 3, 0, 2, 3, 1, 4, 3, 1, 0, 3, 1, 2, 6, 1, 2, 0};
+        try (PointCloud pc = new PointCloud(pts)) {
+            MeanAndCovariance mc = pc.computeMeanAndCovariance();
+            assertArrayEquals(new double[] {1, 2, 3}, mc.mean, 1e-12);
+            assertArrayEquals(new double[] {1.0 / 3, 0, 0, 0, 4.0 / 3, 0, 0, 0, 3}, mc.covariance, 1e-12);
+            double[] d = pc.computeMahalanobisDistance();
+            double[] expected = new double[6];
+            Arrays.fill(expected, Math.sqrt(3));
+            assertArrayEquals(expected, d, 1e-9);
+        }
+        try (PointCloud empty = new PointCloud()) {
+            assertStatus(Status.INVALID_ARGUMENT, empty::computeMeanAndCovariance);
+            assertStatus(Status.INVALID_ARGUMENT, empty::computeMahalanobisDistance);
+        }
+    }
+
     @Test
     void figure1OnCloudBin0() throws Exception {
         File input = dataFile("open3d/Feature/cloud_bin_0.pcd");

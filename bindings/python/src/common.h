@@ -138,6 +138,7 @@ void declare_io(py::module_& m);
 void declare_registration(py::module_& m);
 void define_utility(py::module_& m);
 void define_pointcloud(py::module_& m);
+void define_pointcloud_tools(py::module_& m);
 void define_kdtree(py::module_& m);
 void define_io(py::module_& m);
 void define_registration(py::module_& m);

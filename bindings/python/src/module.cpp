@@ -17,6 +17,7 @@ PYBIND11_MODULE(_o3d, m) {
 
     o::define_utility(m);
     o::define_pointcloud(m);
+    o::define_pointcloud_tools(m);
     o::define_kdtree(m);
     o::define_io(m);
     o::define_registration(m);

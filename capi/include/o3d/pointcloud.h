@@ -177,7 +177,8 @@ O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(const o3d_pointcl
 /* ---- Point-cloud tools (o3d.geometry.PointCloud filters, segmentation, statistics) ----
  * Functions that also return indices write them to a caller buffer: `out_indices` holds `capacity`
  * int32 values, `*out_n` always gets the count (at most the cloud's size, so capacity = size always
- * fits), O3D_ERROR_BUFFER_TOO_SMALL when it does not fit; `out_indices` NULL skips them. */
+ * fits), O3D_ERROR_BUFFER_TOO_SMALL when it does not fit; `out_indices` NULL skips them.
+ * An empty cloud is an O3D_ERROR_INVALID_ARGUMENT for all of them. */
 
 /**
  * @brief Statistical outlier removal: drop points whose mean distance to their `nb_neighbors` nearest

@@ -4,6 +4,7 @@
 /// @brief o3dpp::PointCloud (move-only owner of an o3d_pointcloud_t) and SearchParam.
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "o3d/pointcloud.h"
@@ -214,6 +215,62 @@ public:
         return out;
     }
 
+    // --- tools: filters, segmentation, statistics ---
+
+    /// @brief Drop points whose mean distance to their `nb_neighbors` nearest points is above the
+    /// cloud's mean of that distance + `std_ratio` standard deviations. {kept cloud, kept indices (ascending)}.
+    std::pair<PointCloud, std::vector<int32_t>> remove_statistical_outlier(int nb_neighbors, double std_ratio) const {
+        return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
+            return o3d_pointcloud_remove_statistical_outlier(o, get(), nb_neighbors, std_ratio, idx, cap, n);
+        });
+    }
+    /// @brief Keep points with at least `nb_points` other points within `radius`.
+    /// {kept cloud, kept indices (ascending)}.
+    std::pair<PointCloud, std::vector<int32_t>> remove_radius_outlier(int nb_points, double radius) const {
+        return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
+            return o3d_pointcloud_remove_radius_outlier(o, get(), nb_points, radius, idx, cap, n);
+        });
+    }
+    /// @brief Points inside the box [min_bound, max_bound], bounds included (outside when `invert`).
+    PointCloud crop_aabb(const Vec3& min_bound, const Vec3& max_bound, bool invert = false) const {
+        return adopt([&](o3d_pointcloud_t** o) {
+            return o3d_pointcloud_crop_aabb(o, get(), min_bound.data(), max_bound.data(), invert ? 1 : 0);
+        });
+    }
+    /// @brief RANSAC plane: {(a, b, c, d) with a x + b y + c z + d = 0 and unit (a, b, c), inlier indices
+    /// (ascending)}. Same seed → same result on any thread count.
+    std::pair<std::array<double, 4>, std::vector<int32_t>> segment_plane(double distance_threshold, int ransac_n = 3,
+                                                                         int num_iterations = 100,
+                                                                         double probability = 0.99999999,
+                                                                         uint64_t seed = 0) const {
+        std::pair<std::array<double, 4>, std::vector<int32_t>> out{};
+        out.second = indices([&](int32_t* idx, size_t cap, size_t* n) {
+            return o3d_pointcloud_segment_plane(get(), distance_threshold, ransac_n, num_iterations, probability,
+                                                seed, out.first.data(), idx, cap, n);
+        });
+        return out;
+    }
+    /// @brief DBSCAN labels, one per point: clusters 0, 1, ... in order of their lowest point index, -1 noise.
+    std::vector<int32_t> cluster_dbscan(double eps, int min_points) const {
+        return indices([&](int32_t* labels, size_t cap, size_t* n) {
+            return o3d_pointcloud_cluster_dbscan(get(), eps, min_points, labels, cap, n);
+        });
+    }
+    /// @brief {mean, row-major covariance divided by N}. Empty cloud → Error.
+    std::pair<Vec3, Mat3> compute_mean_and_covariance() const {
+        std::pair<Vec3, Mat3> out{};
+        check(o3d_pointcloud_compute_mean_and_covariance(get(), out.first.data(), out.second.data()));
+        return out;
+    }
+    /// @brief Mahalanobis distance of each point to the cloud's distribution.
+    std::vector<double> compute_mahalanobis_distance() const {
+        std::vector<double> out(size());
+        size_t n = 0;
+        check(o3d_pointcloud_compute_mahalanobis_distance(get(), out.data(), out.size(), &n));
+        out.resize(n);
+        return out;
+    }
+
     /// @brief Run `create(o3d_pointcloud_t**)` and own what it returns.
     template <typename F>
     static PointCloud adopt(F&& create) {
@@ -223,6 +280,22 @@ public:
     }
 
 private:
+    /// @brief Run `fn(int32_t* buffer, capacity, out_n)` with room for one index per point.
+    template <typename F>
+    std::vector<int32_t> indices(F&& fn) const {
+        std::vector<int32_t> out(size());
+        size_t n = 0;
+        check(fn(out.data(), out.size(), &n));
+        out.resize(n < out.size() ? n : out.size());
+        return out;
+    }
+    /// @brief Run a filter writing a new cloud and its kept indices.
+    template <typename F>
+    std::pair<PointCloud, std::vector<int32_t>> filtered(F&& fn) const {
+        o3d_pointcloud_t* p = nullptr;
+        std::vector<int32_t> kept = indices([&](int32_t* idx, size_t cap, size_t* n) { return fn(&p, idx, cap, n); });
+        return {PointCloud(p), std::move(kept)};
+    }
     template <typename T>
     static const T* flat(const std::vector<std::array<T, 3>>& v) {
         static_assert(sizeof(std::array<T, 3>) == 3 * sizeof(T), "std::array<T,3> must be 3 packed values");

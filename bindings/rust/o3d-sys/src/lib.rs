@@ -260,6 +260,64 @@ extern "C" {
         out_n: *mut usize,
         num_threads: i32,
     ) -> o3d_status;
+
+    // Point-cloud tools (filters, segmentation, statistics).
+    pub fn o3d_pointcloud_remove_statistical_outlier(
+        out: *mut *mut o3d_pointcloud_t,
+        pc: *const o3d_pointcloud_t,
+        nb_neighbors: i32,
+        std_ratio: f64,
+        out_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_remove_radius_outlier(
+        out: *mut *mut o3d_pointcloud_t,
+        pc: *const o3d_pointcloud_t,
+        nb_points: i32,
+        radius: f64,
+        out_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_crop_aabb(
+        out: *mut *mut o3d_pointcloud_t,
+        pc: *const o3d_pointcloud_t,
+        min_bound: *const f64,
+        max_bound: *const f64,
+        invert: i32,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_segment_plane(
+        pc: *const o3d_pointcloud_t,
+        distance_threshold: f64,
+        ransac_n: i32,
+        num_iterations: i32,
+        probability: f64,
+        seed: u64,
+        out_plane: *mut f64,
+        out_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_cluster_dbscan(
+        pc: *const o3d_pointcloud_t,
+        eps: f64,
+        min_points: i32,
+        out_labels: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_compute_mean_and_covariance(
+        pc: *const o3d_pointcloud_t,
+        out_mean: *mut f64,
+        out_covariance: *mut f64,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_compute_mahalanobis_distance(
+        pc: *const o3d_pointcloud_t,
+        out: *mut f64,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -114,6 +114,16 @@ fn flat<T>(rows: &[[T; 3]]) -> *const T {
     rows.as_ptr().cast()
 }
 
+fn to_i32(n: usize, name: &str) -> Result<i32> {
+    i32::try_from(n).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("{name} {n} is too large")))
+}
+
+/// Wrap a cloud a successful C call wrote (none → Internal error).
+fn owned(raw: Option<NonNull<sys::o3d_pointcloud_t>>) -> Result<PointCloud> {
+    raw.map(|raw| PointCloud { raw })
+        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no cloud"))
+}
+
 fn opt_ptr(v: &Option<[f64; 3]>) -> *const f64 {
     v.as_ref().map_or(ptr::null(), |a| a.as_ptr())
 }
@@ -512,6 +522,125 @@ impl PointCloud {
         // SAFETY: `out` has room for `cap` doubles or is NULL.
         copy_out::<f64>(|out, cap, n| unsafe {
             sys::o3d_pointcloud_compute_point_cloud_distance(self.as_raw(), target.as_raw(), out, cap, n, 0)
+        })
+    }
+
+    /// Run a C call writing point indices (at most one per point) into a buffer of `len()` slots.
+    fn indices(&self, f: impl FnOnce(*mut i32, usize, *mut usize) -> sys::o3d_status) -> Result<Vec<i32>> {
+        let cap = self.try_len()?;
+        let mut out = vec![0i32; cap];
+        let mut n = 0usize;
+        check(f(out.as_mut_ptr(), cap, &mut n))?;
+        out.truncate(n.min(cap));
+        Ok(out)
+    }
+
+    /// Statistical outlier removal: drop points whose mean distance to their `nb_neighbors`
+    /// nearest points is above the cloud's mean of that distance + `std_ratio` standard deviations.
+    /// Returns the kept cloud and the kept indices (ascending).
+    pub fn remove_statistical_outlier(&self, nb_neighbors: usize, std_ratio: f64) -> Result<(PointCloud, Vec<i32>)> {
+        let nb = to_i32(nb_neighbors, "nb_neighbors")?;
+        let mut cloud = None;
+        let kept = self.indices(|idx, cap, n| {
+            let mut out = ptr::null_mut();
+            // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
+            let status = unsafe {
+                sys::o3d_pointcloud_remove_statistical_outlier(&mut out, self.as_raw(), nb, std_ratio, idx, cap, n)
+            };
+            cloud = NonNull::new(out);
+            status
+        })?;
+        Ok((owned(cloud)?, kept))
+    }
+
+    /// Radius outlier removal: keep points with at least `nb_points` other points within `radius`.
+    /// Returns the kept cloud and the kept indices (ascending).
+    pub fn remove_radius_outlier(&self, nb_points: usize, radius: f64) -> Result<(PointCloud, Vec<i32>)> {
+        let nb = to_i32(nb_points, "nb_points")?;
+        let mut cloud = None;
+        let kept = self.indices(|idx, cap, n| {
+            let mut out = ptr::null_mut();
+            // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
+            let status =
+                unsafe { sys::o3d_pointcloud_remove_radius_outlier(&mut out, self.as_raw(), nb, radius, idx, cap, n) };
+            cloud = NonNull::new(out);
+            status
+        })?;
+        Ok((owned(cloud)?, kept))
+    }
+
+    /// New cloud with the points inside the box `[min_bound, max_bound]` (bounds included), or
+    /// the points outside it when `invert`.
+    pub fn crop_aabb(&self, min_bound: [f64; 3], max_bound: [f64; 3], invert: bool) -> Result<PointCloud> {
+        // SAFETY: valid handle; 3 + 3 doubles.
+        new_cloud(|out| unsafe {
+            sys::o3d_pointcloud_crop_aabb(out, self.as_raw(), min_bound.as_ptr(), max_bound.as_ptr(), invert as i32)
+        })
+    }
+
+    /// RANSAC plane fit: `(a, b, c, d)` with `a x + b y + c z + d = 0` and unit `(a, b, c)`, and
+    /// the inlier indices (ascending). Same seed → same result on any thread count.
+    pub fn segment_plane(
+        &self,
+        distance_threshold: f64,
+        ransac_n: usize,
+        num_iterations: usize,
+        probability: f64,
+        seed: u64,
+    ) -> Result<([f64; 4], Vec<i32>)> {
+        let ransac_n = to_i32(ransac_n, "ransac_n")?;
+        let num_iterations = to_i32(num_iterations, "num_iterations")?;
+        let mut plane = [0.0f64; 4];
+        let inliers = self.indices(|idx, cap, n| {
+            // SAFETY: valid handle; room for 4 doubles; `idx` has room for `cap` ints.
+            unsafe {
+                sys::o3d_pointcloud_segment_plane(
+                    self.as_raw(),
+                    distance_threshold,
+                    ransac_n,
+                    num_iterations,
+                    probability,
+                    seed,
+                    plane.as_mut_ptr(),
+                    idx,
+                    cap,
+                    n,
+                )
+            }
+        })?;
+        Ok((plane, inliers))
+    }
+
+    /// DBSCAN: one label per point, clusters `0, 1, ...` in order of their lowest point index,
+    /// `-1` for noise.
+    pub fn cluster_dbscan(&self, eps: f64, min_points: usize) -> Result<Vec<i32>> {
+        let min_points = to_i32(min_points, "min_points")?;
+        // SAFETY: `out` has room for `cap` ints or is NULL.
+        copy_out::<i32>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_cluster_dbscan(self.as_raw(), eps, min_points, out, cap, n)
+        })
+    }
+
+    /// Mean and covariance (row-major, divided by N) of the points. Empty cloud → Err.
+    pub fn compute_mean_and_covariance(&self) -> Result<([f64; 3], [[f64; 3]; 3])> {
+        let mut mean = [0.0f64; 3];
+        let mut cov = [[0.0f64; 3]; 3];
+        // SAFETY: room for 3 and 9 contiguous doubles.
+        check(unsafe {
+            sys::o3d_pointcloud_compute_mean_and_covariance(
+                self.as_raw(),
+                mean.as_mut_ptr(),
+                cov.as_mut_ptr().cast::<f64>(),
+            )
+        })?;
+        Ok((mean, cov))
+    }
+
+    /// Mahalanobis distance of each point to the cloud's distribution.
+    pub fn compute_mahalanobis_distance(&self) -> Result<Vec<f64>> {
+        // SAFETY: `out` has room for `cap` doubles or is NULL.
+        copy_out::<f64>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_compute_mahalanobis_distance(self.as_raw(), out, cap, n)
         })
     }
 }

@@ -37,6 +37,14 @@ PY_ARGS+=(--threads "$THREADS")
 CPP_ARGS+=(--threads "$THREADS")
 
 if [ -z "${SKIP_INSTALL:-}" ]; then
+  # The open3d wheel links libusb-1.0; PCL rows need libpcl-dev (optional: skipped when absent).
+  SUDO=""; [ "$(id -u)" != 0 ] && SUDO=sudo
+  "$REPO/scripts/install-deps.sh"
+  for pkg in libusb-1.0-0 libpcl-dev; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" ||
+      { $SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "$pkg"; } ||
+      echo "note: could not install $pkg"
+  done
   echo "== venv $VENV"
   [ -x "$VENV/bin/python" ] || "$PYTHON" -m venv "$VENV"
   "$VENV/bin/python" -m pip install -q --upgrade pip

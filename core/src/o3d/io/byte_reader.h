@@ -25,9 +25,10 @@ inline bool is_space(char c) { return kSpace.t[static_cast<unsigned char>(c)]; }
 /// @brief Whitespace that does not end a line.
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-/// @brief Parse a whole token as a double. Accepts what strtod-based writers produce: a leading
-/// '+', "nan", "inf". Overflowing literals fail rather than silently becoming infinities.
-inline bool parse_double(std::string_view tok, double& out) {
+/// @brief Parse a whole token as a floating-point number. Accepts what strtod-based writers produce:
+/// a leading '+', "nan", "inf". Overflowing literals fail rather than silently becoming infinities.
+template <typename Real>
+inline bool parse_real(std::string_view tok, Real& out) {
     const char* b = tok.data();
     const char* e = b + tok.size();
     if (b != e && *b == '+') {
@@ -39,17 +40,8 @@ inline bool parse_double(std::string_view tok, double& out) {
     return ec == std::errc() && p == e;
 }
 
-inline bool parse_float(std::string_view tok, float& out) {
-    const char* b = tok.data();
-    const char* e = b + tok.size();
-    if (b != e && *b == '+') {
-        ++b;
-        if (b != e && *b == '-') return false;
-    }
-    if (b == e) return false;
-    auto [p, ec] = std::from_chars(b, e, out);
-    return ec == std::errc() && p == e;
-}
+inline bool parse_double(std::string_view tok, double& out) { return parse_real(tok, out); }
+inline bool parse_float(std::string_view tok, float& out) { return parse_real(tok, out); }
 
 inline bool parse_int64(std::string_view tok, int64_t& out) {
     const char* b = tok.data();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <exception>
 #include <functional>
 #include <map>
 #include <string>
@@ -53,6 +54,21 @@ constexpr int kKnn = 30;
 /// Exceptions from setup/run propagate. info() is called once after the last run.
 Cell measure(const Config& cfg, const std::function<void()>& setup, const std::function<void()>& run,
              const std::function<std::string()>& info);
+
+/// Runs f() and returns its cell; an exception becomes a cell that reports the (shortened) error,
+/// so one failing row never stops the run.
+template <class F>
+Cell guarded(F&& f) {
+    try {
+        return f();
+    } catch (const std::exception& e) {
+        Cell c;
+        c.skipped = false;
+        c.error = e.what();
+        if (c.error.size() > 100) c.error = c.error.substr(0, 97) + "...";
+        return c;
+    }
+}
 
 /// "fit F rmse R [err Adeg/Bmm]" of a final source->target transform, with one common evaluator (o3d's).
 std::string icp_summary(const IcpCase& c, const double transform[16]);

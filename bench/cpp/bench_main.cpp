@@ -165,19 +165,6 @@ std::array<double, 16> identity() {
 // ------------------------------------------------------------------------------------------------------------
 // o3d rows
 // ------------------------------------------------------------------------------------------------------------
-template <class F>
-Cell guarded(F&& f) {
-    try {
-        return f();
-    } catch (const std::exception& e) {
-        Cell c;
-        c.skipped = false;
-        c.error = e.what();
-        if (c.error.size() > 100) c.error = c.error.substr(0, 97) + "...";
-        return c;
-    }
-}
-
 std::string file_mb(const std::string& path) {
     std::ifstream f(path, std::ios::binary | std::ios::ate);
     char b[32];

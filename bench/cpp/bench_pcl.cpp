@@ -72,19 +72,6 @@ std::string file_size_mb(const std::string& path) {
     return b;
 }
 
-template <class F>
-Cell guarded(F&& f) {
-    try {
-        return f();
-    } catch (const std::exception& e) {
-        Cell c;
-        c.skipped = false;
-        c.error = e.what();
-        if (c.error.size() > 100) c.error = c.error.substr(0, 97) + "...";
-        return c;
-    }
-}
-
 template <class P>
 void check_loaded(const pcl::PointCloud<P>& c, const std::string& path) {
     if (c.empty()) throw std::runtime_error("PCL read an empty cloud from " + path);

@@ -12,12 +12,32 @@
 
 #include "o3d/common.h"
 #include "o3d/pointcloud.h"
+#include "o3d/camera/pinhole_camera.h"
+#include "o3d/geometry/image.h"
 #include "o3d/geometry/point_cloud.h"
+#include "o3d/geometry/rgbd_image.h"
+#include "o3d/geometry/triangle_mesh.h"
 #include "o3d/kdtree/kd_tree.h"
 #include "o3d/utility/error.h"
 
 struct o3d_pointcloud {
     o3d::geometry::PointCloud cloud;
+};
+
+struct o3d_trianglemesh {
+    o3d::geometry::TriangleMesh mesh;
+};
+
+struct o3d_image {
+    o3d::geometry::Image image;
+};
+
+struct o3d_rgbd_image {
+    o3d::geometry::RGBDImage rgbd;
+};
+
+struct o3d_camera_trajectory {
+    o3d::camera::PinholeCameraTrajectory trajectory;
 };
 
 struct o3d_buffer {

@@ -12,6 +12,8 @@ PACKAGES=(
   cmake ninja-build pkg-config g++ clang git ca-certificates
   # core
   libeigen3-dev libflann-dev liblz4-dev liblzf-dev
+  # images, meshes and camera files
+  libpng-dev libjpeg-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   # tests and checks
   libcmocka-dev libgtest-dev abigail-tools valgrind
   # python

@@ -522,6 +522,158 @@ def algo_rows():
         ROWS.append(("ICP", f"ICP point-to-plane ({label})", lambda case=case: icp_impls(case, True), ""))
 
 
+# Geometry breadth (issue 4): meshes, point-cloud tools, RGB-D, images ---------------------------------------------
+MESH_RESOLUTION = 200  # create_sphere(1, 200): 79,602 vertices, 159,200 triangles
+RGBD_COLOR = os.path.join(DATA_DIR, "open3d", "RGBD", "color", "00000.jpg")
+RGBD_DEPTH = os.path.join(DATA_DIR, "open3d", "RGBD", "depth", "00000.png")
+
+
+def mesh_arrays():
+    """A UV sphere built once (by Open3D when present, else o3d), as plain arrays every library starts from."""
+    if "sphere" not in DATA:
+        mod = OPEN3D or O3D
+        m = mod.geometry.TriangleMesh.create_sphere(radius=1.0, resolution=MESH_RESOLUTION)
+        m.compute_vertex_normals()
+        DATA["sphere"] = (np.asarray(m.vertices).copy(), np.asarray(m.triangles).copy(),
+                          np.asarray(m.vertex_normals).copy())
+    return DATA["sphere"]
+
+
+def make_mesh(mod, arrays, triangle_normals=False):
+    """triangle_normals: STL stores one normal per facet (Open3D refuses to write STL without them)."""
+    v, t, n = arrays
+    m = mod.geometry.TriangleMesh()
+    m.vertices = mod.utility.Vector3dVector(v)
+    m.triangles = mod.utility.Vector3iVector(t)
+    m.vertex_normals = mod.utility.Vector3dVector(n)
+    if triangle_normals:
+        m.compute_triangle_normals()
+    return m
+
+
+def mesh_file(ext):
+    key = f"sphere.{ext}"
+    if key not in FILES:
+        path = os.path.join(TMP, key)
+        for wname, wmod in (("open3d", OPEN3D), ("o3d", O3D)):
+            if wmod is None:
+                continue
+            ok = wmod.io.write_triangle_mesh(path, make_mesh(wmod, mesh_arrays(), ext == "stl"), write_ascii=False,
+                                             write_vertex_colors=False)
+            if ok is not False and os.path.exists(path):
+                FILES[key] = path
+                FILE_NOTES.append(f"{key}: create_sphere(1, {MESH_RESOLUTION}) with vertex normals, written once "
+                                  f"by {wname} ({os.path.getsize(path) / 1e6:.1f} MB)")
+                break
+    return FILES[key]
+
+
+def per_lib(make_run, libs=("o3d", "open3d")):
+    """{lib: [("", setup, run, check)]} from make_run(mod) -> (setup, run, check), for each importable lib."""
+    impls = {}
+    for lib in libs:
+        if MOD.get(lib) is not None:
+            impls[lib] = [("",) + tuple(make_run(MOD[lib]))]
+    return impls
+
+
+def cached(build):
+    holder = {}
+
+    def setup():
+        if "v" not in holder:
+            holder["v"] = build()
+        return holder["v"]
+    return setup
+
+
+def mesh_io_impls(ext, write):
+    path = mesh_file(ext)
+
+    def make(mod):
+        if write:
+            out = os.path.join(TMP, f"out_{mod.__name__}_sphere.{ext}")
+            return (cached(lambda: make_mesh(mod, mesh_arrays(), ext == "stl")),
+                    lambda m: (mod.io.write_triangle_mesh(out, m, write_ascii=False, write_vertex_colors=False), out)[1],
+                    lambda p: f"{os.path.getsize(p) / 1e6:.1f} MB")
+        return (None, lambda _: mod.io.read_triangle_mesh(path),
+                lambda m: f"{len(m.vertices)} v {len(m.triangles)} t")
+    return per_lib(make)
+
+
+def mesh_algo_impls(what):
+    def make(mod):
+        setup = cached(lambda: make_mesh(mod, mesh_arrays()))
+        if what == "sample":
+            if mod is O3D:
+                return setup, lambda m: m.sample_points_uniformly(number_of_points=100_000, seed=1), \
+                    lambda pc: f"{len(pc.points)} pts"
+            return setup, lambda m: m.sample_points_uniformly(number_of_points=100_000), \
+                lambda pc: f"{len(pc.points)} pts"
+        target_triangles = len(mesh_arrays()[1]) // 10
+        return setup, lambda m: m.simplify_quadric_decimation(target_number_of_triangles=target_triangles), \
+            lambda r: f"{len(r.triangles)} t, area {r.get_surface_area():.5f}"
+    return per_lib(make)
+
+
+def cloud_tool_impls(what):
+    pts, nrm, col = DATA["fragment"]
+
+    def make(mod):
+        setup = cached(lambda: make_cloud(mod, pts, nrm, col))
+        if what == "statistical":
+            return setup, lambda pc: pc.remove_statistical_outlier(nb_neighbors=20, std_ratio=2.0), \
+                lambda r: f"{len(r[1])} kept"
+        if mod is O3D:
+            run = lambda pc: pc.segment_plane(distance_threshold=0.01, ransac_n=3, num_iterations=1000, seed=7)  # noqa
+        else:
+            run = lambda pc: pc.segment_plane(distance_threshold=0.01, ransac_n=3, num_iterations=1000)  # noqa
+        return setup, run, lambda r: f"{len(r[1])} inliers"
+    return per_lib(make)
+
+
+def rgbd_impls():
+    def make(mod):
+        def setup():
+            color = mod.io.read_image(RGBD_COLOR)
+            depth = mod.io.read_image(RGBD_DEPTH)
+            rgbd = mod.geometry.RGBDImage.create_from_color_and_depth(color, depth, convert_rgb_to_intensity=False)
+            intr = mod.camera.PinholeCameraIntrinsic(mod.camera.PinholeCameraIntrinsicParameters.PrimeSenseDefault)
+            return rgbd, intr
+        s = cached(setup)
+        return s, lambda st: mod.geometry.PointCloud.create_from_rgbd_image(st[0], st[1]), \
+            lambda pc: f"{len(pc.points)} pts"
+    return per_lib(make)
+
+
+def image_filter_impls(kind):
+    def make(mod):
+        def setup():
+            depth = np.asarray(mod.io.read_image(RGBD_DEPTH)).astype(np.float32) / 1000.0
+            return mod.geometry.Image(depth)
+        filt = getattr(mod.geometry.ImageFilterType, kind)
+        return cached(setup), lambda img: img.filter(filt), lambda r: f"{np.asarray(r).shape}"
+    return per_lib(make)
+
+
+def geometry_rows():
+    for ext in ("ply", "obj", "stl"):
+        kind = "text" if ext == "obj" else "binary"
+        ROWS.append(("Mesh I/O", f"read {kind} {ext.upper()} mesh (sphere 159k triangles)",
+                     lambda ext=ext: mesh_io_impls(ext, False), ""))
+        ROWS.append(("Mesh I/O", f"write {kind} {ext.upper()} mesh (sphere 159k triangles)",
+                     lambda ext=ext: mesh_io_impls(ext, True), ""))
+    ROWS.append(("Mesh", "sample_points_uniformly 100k (sphere 159k triangles)", lambda: mesh_algo_impls("sample"), ""))
+    ROWS.append(("Mesh", "simplify_quadric_decimation to 10% (sphere 159k triangles)",
+                 lambda: mesh_algo_impls("simplify"), ""))
+    ROWS.append(("Point-cloud tools", "remove_statistical_outlier(20, 2.0) (fragment)",
+                 lambda: cloud_tool_impls("statistical"), ""))
+    ROWS.append(("Point-cloud tools", "segment_plane(0.01, 3, 1000) (fragment)", lambda: cloud_tool_impls("plane"), ""))
+    ROWS.append(("RGB-D", "create_from_rgbd_image (640x480, PrimeSense)", rgbd_impls, ""))
+    for kind in ("Gaussian7", "Sobel3dx"):
+        ROWS.append(("Image", f"filter {kind} (640x480 float depth)", lambda kind=kind: image_filter_impls(kind), ""))
+
+
 # ----------------------------------------------------------------------------------------------------------------
 # Report
 # ----------------------------------------------------------------------------------------------------------------
@@ -600,6 +752,7 @@ def main():
     io_rows()
     voxel_rows()
     algo_rows()
+    geometry_rows()
 
     results = []
     header = f"{'row':<52} {'o3d':>12} {'open3d':>20} {'small_gicp':>12} {'open3d/o3d':>11} {'sgicp/o3d':>10}"

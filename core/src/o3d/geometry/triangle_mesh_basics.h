@@ -3,6 +3,7 @@
 /// @file triangle_mesh_basics.h
 /// @brief What every mesh algorithm needs first: trusting the triangle indices, and per-triangle geometry.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "o3d/geometry/triangle_mesh.h"
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Replays the committed seed corpus and deterministic mutations of every seed through the
-// readers. Passing means: no crash, no sanitizer report, and no exception but o3d::ParseError.
-// `io_fuzz_replay --write-seeds DIR` regenerates the writer-made part of the corpus.
+// point-cloud, triangle-mesh and image readers. Passing means: no crash, no sanitizer report, and no
+// exception but o3d::ParseError. Seeds live in corpus/<format>/ (point clouds), corpus/mesh_<format>/
+// and corpus/image_<format>/. `io_fuzz_replay --write-seeds DIR` regenerates the writer-made seeds.
 #include <dirent.h>
 #include <sys/stat.h>
 
@@ -15,13 +16,17 @@
 #include <string>
 #include <vector>
 
+#include "o3d/io/image_io.h"
 #include "o3d/io/point_cloud_io.h"
+#include "o3d/io/triangle_mesh_io.h"
 #include "o3d/utility/error.h"
 
 namespace {
 
 using Bytes = std::vector<uint8_t>;
 const char* const kFormats[] = {"ply", "pcd", "xyz", "xyzn", "xyzrgb", "pts"};
+const char* const kMeshFormats[] = {"ply", "obj", "stl", "off", "glb", "gltf"};
+const char* const kImageFormats[] = {"png", "jpg", "ppm", "pgm"};
 constexpr int kMutationsPerSeed = 3000;
 
 struct Rng {
@@ -90,15 +95,54 @@ uint64_t fnv1a(const std::string& s) {
 
 int failures = 0;
 
-/// @brief Read `b` as `format`; anything but success or ParseError is reported.
-void read_one(const Bytes& b, const char* format, const std::string& what) {
+/// @brief Read `b` as a cloud in `format`, write it back and re-read it.
+void read_cloud(const Bytes& b, const char* format) {
+    o3d::io::ReadOptions options;
+    options.remove_nan_points = b.size() % 2 == 1;
+    const auto cloud = o3d::io::read_point_cloud_from_memory(b.data(), b.size(), format, options);
+    const auto again = o3d::io::write_point_cloud_to_memory(cloud, format);
+    if (o3d::io::read_point_cloud_from_memory(again.data(), again.size(), format).size() != cloud.size())
+        throw std::runtime_error("re-reading the written cloud changed its size");
+}
+
+/// @brief Read `b` as a mesh in `format` (post-processed for odd sizes), write it back and re-read it.
+void read_mesh(const Bytes& b, const char* format) {
+    o3d::io::MeshReadOptions options;
+    options.enable_post_processing = b.size() % 2 == 1;
+    const auto mesh = o3d::io::read_triangle_mesh_from_memory(b.data(), b.size(), format, options);
+    o3d::io::MeshWriteOptions w;
+    w.write_ascii = b.size() % 3 == 0;
+    const auto again = o3d::io::write_triangle_mesh_to_memory(mesh, format, w);
+    if (o3d::io::read_triangle_mesh_from_memory(again.data(), again.size(), format).triangles.size() !=
+        mesh.triangles.size())
+        throw std::runtime_error("re-reading the written mesh changed its triangle count");
+}
+
+/// @brief Read `b` as an image in `format`, write it back and re-read it: as PNG (which holds every
+/// 8/16-bit image a reader returns), or for PNM as the PGM or PPM its channel count asks for (a PNM
+/// reader takes either kind).
+void read_image(const Bytes& b, const char* format) {
+    const auto image = o3d::io::read_image_from_memory(b.data(), b.size(), format);
+    const bool pnm = std::strcmp(format, "ppm") == 0 || std::strcmp(format, "pgm") == 0;
+    const char* out = pnm ? (image.num_channels == 1 ? "pgm" : "ppm") : "png";
+    const auto again = o3d::io::write_image_to_memory(image, out);
+    const auto back = o3d::io::read_image_from_memory(again.data(), again.size(), out);
+    if (back.width != image.width || back.height != image.height || back.num_channels != image.num_channels)
+        throw std::runtime_error("re-reading the written image changed its shape");
+}
+
+using Reader = void (*)(const Bytes&, const char*);
+
+/// @brief Run `read` on `b`; anything but success or a ParseError naming "<memory>" is reported
+/// (images may also be o3d::Unsupported: a valid variant the reader does not take, such as ASCII PNM).
+void read_one(Reader read, const Bytes& b, const char* format, const std::string& what) {
     try {
-        o3d::io::ReadOptions options;
-        options.remove_nan_points = b.size() % 2 == 1;
-        const auto cloud = o3d::io::read_point_cloud_from_memory(b.data(), b.size(), format, options);
-        const auto again = o3d::io::write_point_cloud_to_memory(cloud, format);
-        if (o3d::io::read_point_cloud_from_memory(again.data(), again.size(), format).size() != cloud.size())
-            throw std::runtime_error("re-reading the written cloud changed its size");
+        try {
+            read(b, format);
+        } catch (const o3d::Unsupported& e) {
+            if (read != read_image) throw;
+            throw o3d::ParseError(e.what());
+        }
     } catch (const o3d::ParseError& e) {
         if (std::strstr(e.what(), "<memory>: ") != e.what()) {
             ++failures;
@@ -140,6 +184,42 @@ o3d::geometry::PointCloud tiny_cloud(bool normals, bool colors) {
     return pc;
 }
 
+void save(const std::string& dir, const std::string& sub, const std::string& name, const Bytes& b) {
+    const std::string folder = dir + "/" + sub;
+    mkdir(folder.c_str(), 0755);
+    const std::string path = folder + "/" + name;
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), static_cast<long>(b.size()));
+    std::printf("wrote %s (%zu bytes)\n", path.c_str(), b.size());
+}
+
+/// @brief A square pyramid (a quad base, four sides) with normals, colours and UVs.
+o3d::geometry::TriangleMesh tiny_mesh() {
+    o3d::geometry::TriangleMesh m;
+    const double xyz[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.75}};
+    for (int i = 0; i < 5; ++i) {
+        m.vertices.emplace_back(xyz[i][0], xyz[i][1], xyz[i][2]);
+        m.vertex_normals.emplace_back(xyz[i][0] - 0.5, xyz[i][1] - 0.5, xyz[i][2] - 0.25);
+        m.vertex_colors.emplace_back(i / 4.0, 1.0, 0.2);
+    }
+    const int tris[6][3] = {{0, 2, 1}, {0, 3, 2}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    for (const auto& t : tris) {
+        m.triangles.emplace_back(t[0], t[1], t[2]);
+        for (int k = 0; k < 3; ++k) m.triangle_uvs.emplace_back(xyz[t[k]][0], xyz[t[k]][1]);
+    }
+    return m;
+}
+
+o3d::geometry::Image tiny_image(int channels, int bytes) {
+    o3d::geometry::Image im;
+    im.width = 5;
+    im.height = 3;
+    im.num_channels = channels;
+    im.bytes_per_channel = bytes;
+    im.data.resize(im.byte_size());
+    for (size_t i = 0; i < im.data.size(); ++i) im.data[i] = static_cast<uint8_t>(i * 37 + 11);
+    return im;
+}
+
 int write_seeds(const std::string& dir) {
     struct Seed {
         const char* format;
@@ -156,14 +236,58 @@ int write_seeds(const std::string& dir) {
         w.write_ascii = s.ascii;
         w.compressed = s.compressed;
         const Bytes b = o3d::io::write_point_cloud_to_memory(tiny_cloud(s.normals, s.colors), s.format, w);
-        const std::string sub = dir + "/" + s.format;
-        mkdir(sub.c_str(), 0755);
-        const std::string name = sub + "/written" + (s.ascii ? "_ascii" : "") + (s.compressed ? "_compressed" : "") +
-                                 (s.normals ? "_normals" : "") + (s.colors ? "_colors" : "") + "." + s.format;
-        std::ofstream(name, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), static_cast<long>(b.size()));
-        std::printf("wrote %s (%zu bytes)\n", name.c_str(), b.size());
+        save(dir, s.format,
+             std::string("written") + (s.ascii ? "_ascii" : "") + (s.compressed ? "_compressed" : "") +
+                 (s.normals ? "_normals" : "") + (s.colors ? "_colors" : "") + "." + s.format,
+             b);
     }
+    for (const char* f : kMeshFormats)
+        for (bool ascii : {false, true}) {
+            const std::string fmt = f;
+            if (ascii && fmt != "ply" && fmt != "stl") continue;
+            o3d::io::MeshWriteOptions w;
+            w.write_ascii = ascii;
+            save(dir, "mesh_" + fmt, std::string("written") + (ascii ? "_ascii" : "") + "." + fmt,
+                 o3d::io::write_triangle_mesh_to_memory(tiny_mesh(), fmt, w));
+        }
+    const struct {
+        const char* format;
+        int channels, bytes;
+    } images[] = {{"png", 3, 1}, {"png", 1, 2}, {"png", 4, 1}, {"jpg", 3, 1}, {"jpg", 1, 1},
+                  {"ppm", 3, 1}, {"ppm", 3, 2}, {"pgm", 1, 1}, {"pgm", 1, 2}};
+    for (const auto& im : images)
+        save(dir, std::string("image_") + im.format,
+             "written_" + std::to_string(im.channels) + "x" + std::to_string(8 * im.bytes) + "." + im.format,
+             o3d::io::write_image_to_memory(tiny_image(im.channels, im.bytes), im.format));
     return 0;
+}
+
+/// @brief The seeds of one family under root/<prefix><format>/: each must read as its own format, and
+/// neither it nor thousands of mutations of it may crash any reader of the family.
+template <size_t N>
+void replay(const std::string& root, const std::string& prefix, const char* const (&formats)[N], Reader read,
+            size_t& seeds, size_t& inputs) {
+    for (const char* format : formats) {
+        for (const std::string& path : list_files(root + "/" + prefix + format)) {
+            const Bytes seed = slurp(path);
+            ++seeds;
+            try {
+                read(seed, format);
+            } catch (const std::exception& e) {
+                ++failures;
+                std::fprintf(stderr, "FAIL seed %s does not read: %s\n", path.c_str(), e.what());
+            }
+            for (const char* other : formats) read_one(read, seed, other, path);
+            Rng rng{fnv1a(path.substr(root.size()))};
+            for (int m = 0; m < kMutationsPerSeed; ++m) {
+                Bytes b = seed;
+                const size_t edits = 1 + rng.below(4);
+                for (size_t e = 0; e < edits; ++e) mutate(b, rng);
+                read_one(read, b, format, path + " mutation " + std::to_string(m));
+                ++inputs;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -172,31 +296,17 @@ int main(int argc, char** argv) {
     if (argc == 3 && std::strcmp(argv[1], "--write-seeds") == 0) return write_seeds(argv[2]);
     const std::string root = argc > 1 ? argv[1] : O3D_FUZZ_CORPUS;
     size_t seeds = 0, inputs = 0;
-    for (const char* format : kFormats) {
-        for (const std::string& path : list_files(root + "/" + format)) {
-            const Bytes seed = slurp(path);
-            ++seeds;
-            // The seed itself must read cleanly as its own format, and not crash any other reader.
-            try {
-                o3d::io::read_point_cloud_from_memory(seed.data(), seed.size(), format);
-            } catch (const std::exception& e) {
-                ++failures;
-                std::fprintf(stderr, "FAIL seed %s does not read: %s\n", path.c_str(), e.what());
-            }
-            for (const char* other : kFormats) read_one(seed, other, path);
-            Rng rng{fnv1a(path.substr(root.size()))};
-            for (int m = 0; m < kMutationsPerSeed; ++m) {
-                Bytes b = seed;
-                const size_t edits = 1 + rng.below(4);
-                for (size_t e = 0; e < edits; ++e) mutate(b, rng);
-                read_one(b, format, path + " mutation " + std::to_string(m));
-                ++inputs;
-            }
-        }
-    }
-    std::printf("%zu seeds, %zu mutated inputs, %d failures\n", seeds, inputs, failures);
-    if (seeds < 6) {
-        std::fprintf(stderr, "FAIL: expected seeds under %s/<format>/\n", root.c_str());
+    replay(root, "", kFormats, read_cloud, seeds, inputs);
+    const size_t cloud_seeds = seeds;
+    replay(root, "mesh_", kMeshFormats, read_mesh, seeds, inputs);
+    const size_t mesh_seeds = seeds - cloud_seeds;
+    replay(root, "image_", kImageFormats, read_image, seeds, inputs);
+    const size_t image_seeds = seeds - cloud_seeds - mesh_seeds;
+    std::printf("%zu seeds (%zu clouds, %zu meshes, %zu images), %zu mutated inputs, %d failures\n", seeds,
+                cloud_seeds, mesh_seeds, image_seeds, inputs, failures);
+    if (cloud_seeds < 6 || mesh_seeds < 6 || image_seeds < 4) {
+        std::fprintf(stderr, "FAIL: expected seeds under %s/<format>/, mesh_<format>/ and image_<format>/\n",
+                     root.c_str());
         return 1;
     }
     return failures ? 1 : 0;

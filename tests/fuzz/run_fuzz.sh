@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Build the libFuzzer targets with clang and fuzz each point-cloud reader for N seconds.
-#   tests/fuzz/run_fuzz.sh [seconds per format, default 30] [formats...]
+# Build the libFuzzer targets with clang and fuzz each reader (clouds, meshes, images) for N seconds.
+#   tests/fuzz/run_fuzz.sh [seconds per format, default 30] [corpus folders: ply, mesh_obj, image_png, ...]
 # Findings (crash-*, leak-*, timeout-*) land in build-fuzz/findings/<format>/; the committed
 # corpus is read, never written: new interesting inputs go to build-fuzz/corpus/<format>/.
 set -euo pipefail
@@ -8,7 +8,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 secs=${1:-30}
 shift || true
-formats=${*:-ply pcd xyz xyzn xyzrgb pts}
+formats=${*:-ply pcd xyz xyzn xyzrgb pts mesh_ply mesh_obj mesh_stl mesh_off mesh_glb mesh_gltf image_png image_jpg image_ppm image_pgm}
 build=${O3D_FUZZ_BUILD_DIR:-$root/build-fuzz}
 jobs=${O3D_FUZZ_JOBS:-2}
 

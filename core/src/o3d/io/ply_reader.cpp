@@ -1,79 +1,31 @@
 // SPDX-License-Identifier: MIT
-// PLY reader: ascii, binary_little_endian, binary_big_endian. Only the vertex element's x y z,
-// nx ny nz and red green blue are kept; every other property and element is walked and skipped,
-// so a truncated or inconsistent file is caught wherever the damage is.
+// PLY element reading: ascii, binary_little_endian, binary_big_endian. The vertex element's x y z,
+// nx ny nz, red green blue (and for meshes u v) and the face element's vertex index and texcoord lists are
+// kept; every other property and element is walked and skipped, so a truncated or inconsistent file is
+// caught wherever the damage is.
+#include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "o3d/io/byte_reader.h"
-#include "o3d/io/io_internal.h"
+#include "o3d/io/file_bytes.h"
+#include "o3d/io/mesh_io_internal.h"
+#include "o3d/io/ply_format.h"
 
 namespace o3d::io::detail {
 namespace {
 
-enum class PlyEncoding { Ascii, BinaryLittle, BinaryBig };
+// The vertex attributes read, in sink order.
+enum Slot { kX, kY, kZ, kNx, kNy, kNz, kRed, kGreen, kBlue, kU, kV, kSlotCount };
 
-struct PlyProperty {
-    std::string name;
-    bool is_list = false;
-    ScalarType type = ScalarType::Float32;  // the scalar's type, or the list items' type
-    ScalarType count_type = ScalarType::UInt8;
-};
-
-struct PlyElement {
-    std::string name;
-    uint64_t count = 0;
-    std::vector<PlyProperty> props;
-
-    bool has_list() const {
-        for (const auto& p : props)
-            if (p.is_list) return true;
-        return false;
-    }
-    /// @brief Bytes of one record when every list is empty (exact when there are no lists).
-    size_t min_record_size() const {
-        size_t s = 0;
-        for (const auto& p : props) s += scalar_size(p.is_list ? p.count_type : p.type);
-        return s;
-    }
-};
-
-struct PlyHeader {
-    PlyEncoding encoding = PlyEncoding::Ascii;
-    std::vector<PlyElement> elements;
-    size_t data_offset = 0;
-};
-
-// The attributes read into the cloud, in PointCloud order.
-enum Slot { kX, kY, kZ, kNx, kNy, kNz, kRed, kGreen, kBlue, kSlotCount };
-constexpr const char* kSlotNames[kSlotCount] = {"x", "y", "z", "nx", "ny", "nz", "red", "green", "blue"};
-
-int slot_of(const std::string& name) {
-    for (int s = 0; s < kSlotCount; ++s)
-        if (name == kSlotNames[s]) return s;
+int slot_of(const std::string& n) {
+    static const char* const kNames[kRed + 3] = {"x", "y", "z", "nx", "ny", "nz", "red", "green", "blue"};
+    for (int s = 0; s < kRed + 3; ++s)
+        if (n == kNames[s]) return s;
+    if (n == "u" || n == "s" || n == "texture_u") return kU;
+    if (n == "v" || n == "t" || n == "texture_v") return kV;
     return -1;
-}
-
-bool parse_type(std::string_view s, ScalarType& t) {
-    struct Name {
-        const char* name;
-        ScalarType type;
-    };
-    static const Name kNames[] = {
-        {"char", ScalarType::Int8},      {"int8", ScalarType::Int8},       {"uchar", ScalarType::UInt8},
-        {"uint8", ScalarType::UInt8},    {"short", ScalarType::Int16},     {"int16", ScalarType::Int16},
-        {"ushort", ScalarType::UInt16},  {"uint16", ScalarType::UInt16},   {"int", ScalarType::Int32},
-        {"int32", ScalarType::Int32},    {"uint", ScalarType::UInt32},     {"uint32", ScalarType::UInt32},
-        {"float", ScalarType::Float32},  {"float32", ScalarType::Float32}, {"double", ScalarType::Float64},
-        {"float64", ScalarType::Float64}, {"int64", ScalarType::Int64},    {"uint64", ScalarType::UInt64},
-    };
-    for (const auto& n : kNames)
-        if (s == n.name) {
-            t = n.type;
-            return true;
-        }
-    return false;
 }
 
 /// @brief Colour channels stored as integers are scaled to [0,1] by their type's range.
@@ -87,98 +39,112 @@ double color_divisor(ScalarType t) {
     }
 }
 
-PlyHeader parse_header(const Input& in) {
-    TextCursor cur(in.chars(), in.chars_end());
-    if (cur.line() != "ply") parse_error(in, "PLY: the first line is not 'ply'");
-    PlyHeader h;
-    bool have_format = false;
-    bool ended = false;
-    size_t line_no = 1;
-    while (!cur.at_end()) {
-        ++line_no;
-        const std::string_view line = cur.line();
-        const std::string where = "PLY header line " + std::to_string(line_no) + ": ";
-        TextCursor lc(line);
-        const std::string_view kw = lc.token();
-        if (kw.empty() || kw == "comment" || kw == "obj_info") continue;
-        if (kw == "end_header") {
-            ended = true;
-            break;
-        }
-        if (kw == "format") {
-            const std::string_view enc = lc.token();
-            if (enc == "ascii") h.encoding = PlyEncoding::Ascii;
-            else if (enc == "binary_little_endian") h.encoding = PlyEncoding::BinaryLittle;
-            else if (enc == "binary_big_endian") h.encoding = PlyEncoding::BinaryBig;
-            else parse_error(in, where + "unknown format '" + std::string(enc) + "'");
-            have_format = true;
-        } else if (kw == "element") {
-            PlyElement e;
-            e.name = std::string(lc.token());
-            const std::string_view count = lc.token();
-            int64_t n = 0;
-            if (e.name.empty() || !parse_int64(count, n))
-                parse_error(in, where + "expected 'element <name> <count>'");
-            if (n < 0) parse_error(in, where + "element '" + e.name + "' has a negative count " + std::to_string(n));
-            e.count = static_cast<uint64_t>(n);
-            h.elements.push_back(std::move(e));
-        } else if (kw == "property") {
-            if (h.elements.empty()) parse_error(in, where + "property before any element");
-            PlyProperty p;
-            std::string_view t = lc.token();
-            if (t == "list") {
-                p.is_list = true;
-                if (!parse_type(lc.token(), p.count_type) || !is_integer(p.count_type))
-                    parse_error(in, where + "a list's length type must be an integer type");
-                t = lc.token();
-            }
-            if (!parse_type(t, p.type)) parse_error(in, where + "unknown property type '" + std::string(t) + "'");
-            p.name = std::string(lc.token());
-            if (p.name.empty()) parse_error(in, where + "property without a name");
-            h.elements.back().props.push_back(std::move(p));
-        } else {
-            parse_error(in, where + "unknown keyword '" + std::string(kw) + "'");
-        }
-    }
-    if (!ended) parse_error(in, "PLY: the header has no end_header line");
-    if (!have_format) parse_error(in, "PLY: the header has no format line");
-    h.data_offset = static_cast<size_t>(cur.pos() - in.chars());
-    return h;
+template <typename T>
+void allocate(std::vector<T>* v, size_t n) {
+    v->resize(n);
+    prefault(v->data(), n * sizeof(T));
 }
 
-/// @brief Where the kept attributes are, and how to hold them.
+/// @brief Where the kept vertex attributes are, and where they go.
 struct VertexPlan {
-    int slot_prop[kSlotCount];   // property index per slot, -1 when absent
+    int slot_prop[kSlotCount];   // property index per slot, -1 when absent or not wanted
     std::vector<int> prop_slot;  // slot per property, -1 for the skipped ones
     bool normals = false;
     bool colors = false;
+    bool uvs = false;
+    const PlyVertexSink& sink;
 
-    VertexPlan(const Input& in, const PlyElement& v) {
-        for (int& s : slot_prop) s = -1;
+    VertexPlan(const Input& in, const PlyElement& v, const PlyVertexSink& s) : sink(s) {
+        for (int& p : slot_prop) p = -1;
         prop_slot.assign(v.props.size(), -1);
         for (size_t i = 0; i < v.props.size(); ++i) {
-            const int s = slot_of(v.props[i].name);
-            if (s < 0 || slot_prop[s] >= 0) continue;
+            const int slot = slot_of(v.props[i].name);
+            if (slot < 0 || slot_prop[slot] >= 0 || !wanted(slot)) continue;
             if (v.props[i].is_list)
                 parse_error(in, "PLY: vertex property '" + v.props[i].name + "' is a list, not a scalar");
-            slot_prop[s] = static_cast<int>(i);
-            prop_slot[i] = s;
+            slot_prop[slot] = static_cast<int>(i);
+            prop_slot[i] = slot;
         }
         if (slot_prop[kX] < 0 || slot_prop[kY] < 0 || slot_prop[kZ] < 0)
             parse_error(in, "PLY: the vertex element lacks an x, y or z property");
         normals = slot_prop[kNx] >= 0 && slot_prop[kNy] >= 0 && slot_prop[kNz] >= 0;
         colors = slot_prop[kRed] >= 0 && slot_prop[kGreen] >= 0 && slot_prop[kBlue] >= 0;
+        uvs = slot_prop[kU] >= 0 && slot_prop[kV] >= 0;
     }
 
-    void allocate(geometry::PointCloud& cloud, size_t n) const {
-        allocate_cloud(cloud, n, normals, colors);
+    bool wanted(int slot) const {
+        if (slot <= kZ) return true;
+        if (slot <= kNz) return sink.normals != nullptr;
+        if (slot <= kBlue) return sink.colors != nullptr;
+        return sink.uvs != nullptr;
+    }
+
+    /// @brief The value of property p as stored (colours scaled to [0,1]).
+    static double scaled(int slot, double v, ScalarType t) { return slot >= kRed && slot <= kBlue ? v / color_divisor(t) : v; }
+
+    void allocate_all(size_t n) const {
+        allocate(sink.points, n);
+        if (normals) allocate(sink.normals, n);
+        if (colors) allocate(sink.colors, n);
+        if (uvs) allocate(sink.uvs, n);
     }
 
     /// @brief Store one vertex whose kept values are in `v` (colours already scaled).
-    void store(geometry::PointCloud& cloud, size_t i, const double* v) const {
-        cloud.points[i] = Eigen::Vector3d(v[kX], v[kY], v[kZ]);
-        if (normals) cloud.normals[i] = Eigen::Vector3d(v[kNx], v[kNy], v[kNz]);
-        if (colors) cloud.colors[i] = Eigen::Vector3d(v[kRed], v[kGreen], v[kBlue]);
+    void store(size_t i, const double* v) const {
+        (*sink.points)[i] = Eigen::Vector3d(v[kX], v[kY], v[kZ]);
+        if (normals) (*sink.normals)[i] = Eigen::Vector3d(v[kNx], v[kNy], v[kNz]);
+        if (colors) (*sink.colors)[i] = Eigen::Vector3d(v[kRed], v[kGreen], v[kBlue]);
+        if (uvs) (*sink.uvs)[i] = Eigen::Vector2d(v[kU], v[kV]);
+    }
+};
+
+/// @brief Which lists of the face element are kept, and the polygon being assembled.
+struct FacePlan {
+    int index_prop = -1;
+    int uv_prop = -1;
+    const PlyFaceSink& sink;
+    std::vector<int64_t> corners;
+    std::vector<double> corner_uvs;
+
+    FacePlan(const Input& in, const PlyElement& f, const PlyFaceSink& s) : sink(s) {
+        for (size_t i = 0; i < f.props.size(); ++i) {
+            const PlyProperty& p = f.props[i];
+            if (!p.is_list) continue;
+            if (index_prop < 0 && (p.name == "vertex_indices" || p.name == "vertex_index")) {
+                if (!is_integer(p.type)) parse_error(in, "PLY: the face list '" + p.name + "' must hold integers");
+                index_prop = static_cast<int>(i);
+            } else if (uv_prop < 0 && p.name == "texcoord" && s.corner_uvs) {
+                uv_prop = static_cast<int>(i);
+            }
+        }
+        if (index_prop < 0 && f.count > 0)
+            parse_error(in, "PLY: the face element has no vertex_indices (or vertex_index) list");
+    }
+
+    void begin() {
+        corners.clear();
+        corner_uvs.clear();
+    }
+
+    /// @brief Emit the polygon just read as triangles (a fan, as Open3D does).
+    void finish(const Input& in, uint64_t r) {
+        const size_t n = corners.size();
+        if (n < 3) parse_error(in, "PLY: face " + std::to_string(r) + " has " + std::to_string(n) + " corners (< 3)");
+        for (int64_t c : corners)
+            if (c < 0 || c > INT32_MAX)
+                parse_error(in, "PLY: face " + std::to_string(r) + " has the vertex index " + std::to_string(c) +
+                                    ", out of range");
+        if (uv_prop >= 0 && !corner_uvs.empty() && corner_uvs.size() != 2 * n)
+            parse_error(in, "PLY: face " + std::to_string(r) + " has " + std::to_string(corner_uvs.size()) +
+                                " texcoord values for " + std::to_string(n) + " corners");
+        fan_triangulate(n, [&](size_t a, size_t b, size_t c) {
+            sink.triangles->emplace_back(static_cast<int>(corners[a]), static_cast<int>(corners[b]),
+                                         static_cast<int>(corners[c]));
+            if (uv_prop < 0) return;
+            for (size_t k : {a, b, c})
+                sink.corner_uvs->emplace_back(corner_uvs.empty() ? 0.0 : corner_uvs[2 * k],
+                                              corner_uvs.empty() ? 0.0 : corner_uvs[2 * k + 1]);
+        });
     }
 };
 
@@ -198,19 +164,19 @@ public:
             pos_ += e.count * stride;
             return;
         }
-        for (uint64_t r = 0; r < e.count; ++r) walk_record(e, r, nullptr, nullptr);
+        for (uint64_t r = 0; r < e.count; ++r) walk_record(e, r, nullptr, nullptr, nullptr);
     }
 
-    void read_vertices(const PlyElement& e, const VertexPlan& plan, geometry::PointCloud& cloud) {
+    void read_vertices(const PlyElement& e, const VertexPlan& plan) {
         const size_t min_size = e.min_record_size();
-        if (e.count > remaining() / min_size) truncated(e, min_size);
+        if (min_size == 0 || e.count > remaining() / min_size) truncated(e, min_size);
         const size_t n = static_cast<size_t>(e.count);
-        plan.allocate(cloud, n);
+        plan.allocate_all(n);
         if (e.has_list()) {
             double values[kSlotCount];
             for (size_t i = 0; i < n; ++i) {
-                walk_record(e, i, &plan, values);
-                plan.store(cloud, i, values);
+                walk_record(e, i, &plan, values, nullptr);
+                plan.store(i, values);
             }
             return;
         }
@@ -220,24 +186,63 @@ public:
             const int s = plan.prop_slot[p];
             if (s >= 0) offset[s] = off;
         }
+        auto type_of = [&](int slot) { return e.props[static_cast<size_t>(plan.slot_prop[slot])].type; };
         auto decode = [&](int first, std::vector<Eigen::Vector3d>& out) {
             TripleLayout l{};
             for (int k = 0; k < 3; ++k) {
                 l.base[k] = pos_ + offset[first + k];
                 l.stride[k] = min_size;
-                l.type[k] = e.props[static_cast<size_t>(plan.slot_prop[first + k])].type;
+                l.type[k] = type_of(first + k);
             }
             decode_triples(l, n, first == kRed ? color_divisor(l.type[0]) : 1.0, swap_, out.data());
         };
-        decode(kX, cloud.points);
-        if (plan.normals) decode(kNx, cloud.normals);
-        if (plan.colors) decode(kRed, cloud.colors);
+        decode(kX, *plan.sink.points);
+        if (plan.normals) decode(kNx, *plan.sink.normals);
+        if (plan.colors) decode(kRed, *plan.sink.colors);
+        if (plan.uvs) {
+            auto& uv = *plan.sink.uvs;
+            for (size_t i = 0; i < n; ++i) {
+                uv[i][0] = load_as_double(pos_ + i * min_size + offset[kU], type_of(kU), swap_);
+                uv[i][1] = load_as_double(pos_ + i * min_size + offset[kV], type_of(kV), swap_);
+            }
+        }
         pos_ += n * min_size;
     }
 
+    void read_faces(const PlyElement& e, FacePlan& plan) {
+        const size_t min_size = e.min_record_size();
+        if (e.count > remaining() / (min_size ? min_size : 1)) truncated(e, min_size);
+        plan.sink.triangles->reserve(plan.sink.triangles->size() + static_cast<size_t>(e.count));
+        if (e.props.size() == 1 && !swap_ && e.props[0].count_type == ScalarType::UInt8 &&
+            (e.props[0].type == ScalarType::Int32 || e.props[0].type == ScalarType::UInt32)) {
+            // The layout nearly every writer uses: one uchar-counted list of 32-bit indices, mostly triangles.
+            for (uint64_t r = 0; r < e.count; ++r) {
+                if (remaining() >= 13 && pos_[0] == 3) {
+                    int32_t t[3];
+                    std::memcpy(t, pos_ + 1, 12);
+                    if (t[0] >= 0 && t[1] >= 0 && t[2] >= 0) {  // UInt32 above INT32_MAX: the general path rejects it
+                        plan.sink.triangles->emplace_back(t[0], t[1], t[2]);
+                        pos_ += 13;
+                        continue;
+                    }
+                }
+                plan.begin();
+                walk_record(e, r, nullptr, nullptr, &plan);
+                plan.finish(in_, r);
+            }
+            return;
+        }
+        for (uint64_t r = 0; r < e.count; ++r) {
+            plan.begin();
+            walk_record(e, r, nullptr, nullptr, &plan);
+            plan.finish(in_, r);
+        }
+    }
+
 private:
-    /// @brief Walk one record with lists; with a plan, collect the kept values into `values`.
-    void walk_record(const PlyElement& e, uint64_t r, const VertexPlan* plan, double* values) {
+    /// @brief Walk one record; with a vertex plan, collect the kept scalars into `values`; with a face
+    /// plan, collect its index and texcoord lists.
+    void walk_record(const PlyElement& e, uint64_t r, const VertexPlan* plan, double* values, FacePlan* face) {
         for (size_t p = 0; p < e.props.size(); ++p) {
             const PlyProperty& prop = e.props[p];
             if (!prop.is_list) {
@@ -245,10 +250,7 @@ private:
                 if (remaining() < size) truncated_at(e, r);
                 if (plan) {
                     const int s = plan->prop_slot[p];
-                    if (s >= 0) {
-                        const double v = load_as_double(pos_, prop.type, swap_);
-                        values[s] = s >= kRed ? v / color_divisor(prop.type) : v;
-                    }
+                    if (s >= 0) values[s] = VertexPlan::scaled(s, load_as_double(pos_, prop.type, swap_), prop.type);
                 }
                 pos_ += size;
                 continue;
@@ -262,6 +264,13 @@ private:
                                      prop.name + "'");
             const size_t item = scalar_size(prop.type);
             if (static_cast<uint64_t>(len) > remaining() / item) truncated_at(e, r);
+            const int p_int = static_cast<int>(p);
+            if (face && p_int == face->index_prop) {
+                for (int64_t k = 0; k < len; ++k) face->corners.push_back(load_as_int64(pos_ + k * item, prop.type, swap_));
+            } else if (face && p_int == face->uv_prop) {
+                for (int64_t k = 0; k < len; ++k)
+                    face->corner_uvs.push_back(load_as_double(pos_ + k * item, prop.type, swap_));
+            }
             pos_ += static_cast<size_t>(len) * item;
         }
     }
@@ -287,23 +296,27 @@ public:
 
     void skip_element(const PlyElement& e) {
         if (e.props.empty()) return;
-        for (uint64_t r = 0; r < e.count; ++r) walk_record(e, r, nullptr, nullptr);
+        for (uint64_t r = 0; r < e.count; ++r) walk_record(e, r, nullptr, nullptr, nullptr);
     }
 
-    void read_vertices(const PlyElement& e, const VertexPlan& plan, geometry::PointCloud& cloud) {
-        // Each value needs at least one character and one separator: bound the count by the
-        // bytes left before allocating anything for it.
-        const size_t max_tokens = (cur_.remaining() + 1) / 2;
-        if (e.count > max_tokens / e.props.size())
-            parse_error(in_, "PLY: the vertex element declares " + count_text(e.count, "vertices") + " of " +
-                                 std::to_string(e.props.size()) + " values but only " +
-                                 std::to_string(cur_.remaining()) + " bytes of text are left");
+    void read_vertices(const PlyElement& e, const VertexPlan& plan) {
+        bound_count(e);
         const size_t n = static_cast<size_t>(e.count);
-        plan.allocate(cloud, n);
+        plan.allocate_all(n);
         double values[kSlotCount];
         for (size_t i = 0; i < n; ++i) {
-            walk_record(e, i, &plan, values);
-            plan.store(cloud, i, values);
+            walk_record(e, i, &plan, values, nullptr);
+            plan.store(i, values);
+        }
+    }
+
+    void read_faces(const PlyElement& e, FacePlan& plan) {
+        bound_count(e);
+        plan.sink.triangles->reserve(plan.sink.triangles->size() + static_cast<size_t>(e.count));
+        for (uint64_t r = 0; r < e.count; ++r) {
+            plan.begin();
+            walk_record(e, r, nullptr, nullptr, &plan);
+            plan.finish(in_, r);
         }
     }
 
@@ -313,18 +326,33 @@ public:
     }
 
 private:
-    void walk_record(const PlyElement& e, uint64_t r, const VertexPlan* plan, double* values) {
+    /// @brief Each value needs at least one character and one separator: bound the count by the bytes
+    /// left before allocating anything for it.
+    void bound_count(const PlyElement& e) {
+        const size_t max_tokens = (cur_.remaining() + 1) / 2;
+        if (!e.props.empty() && e.count > max_tokens / e.props.size())
+            parse_error(in_, "PLY: the " + e.name + " element declares " +
+                                 count_text(e.count, e.name == "vertex" ? "vertices" : e.name == "face" ? "faces" : "records") + " of " +
+                                 std::to_string(e.props.size()) + " values but only " +
+                                 std::to_string(cur_.remaining()) + " bytes of text are left");
+    }
+
+    double number(const PlyElement& e, uint64_t r, const PlyProperty& prop) {
+        double v;
+        std::string_view tok;
+        if (!cur_.number(v, tok)) {
+            if (tok.empty()) truncated_at(e, r);
+            bad_number(e, r, prop, tok);
+        }
+        return v;
+    }
+
+    void walk_record(const PlyElement& e, uint64_t r, const VertexPlan* plan, double* values, FacePlan* face) {
         for (size_t p = 0; p < e.props.size(); ++p) {
             const PlyProperty& prop = e.props[p];
             if (!prop.is_list && plan && plan->prop_slot[p] >= 0) {
                 const int s = plan->prop_slot[p];
-                double v;
-                std::string_view tok;
-                if (!cur_.number(v, tok)) {
-                    if (tok.empty()) truncated_at(e, r);
-                    bad_number(e, r, prop, tok);
-                }
-                values[s] = s >= kRed ? v / color_divisor(prop.type) : v;
+                values[s] = VertexPlan::scaled(s, number(e, r, prop), prop.type);
                 continue;
             }
             const std::string_view tok = cur_.token();
@@ -335,8 +363,21 @@ private:
             if (len < 0)
                 parse_error(in_, "PLY: " + e.name + " " + std::to_string(r) + " has a negative length for list '" +
                                      prop.name + "'");
-            for (int64_t k = 0; k < len; ++k)
-                if (!cur_.skip_token()) truncated_at(e, r);
+            const int p_int = static_cast<int>(p);
+            if (face && p_int == face->index_prop) {
+                for (int64_t k = 0; k < len; ++k) {
+                    const std::string_view t = cur_.token();
+                    if (t.empty()) truncated_at(e, r);
+                    int64_t v;
+                    if (!parse_int64(t, v)) bad_number(e, r, prop, t);
+                    face->corners.push_back(v);
+                }
+            } else if (face && p_int == face->uv_prop) {
+                for (int64_t k = 0; k < len; ++k) face->corner_uvs.push_back(number(e, r, prop));
+            } else {
+                for (int64_t k = 0; k < len; ++k)
+                    if (!cur_.skip_token()) truncated_at(e, r);
+            }
         }
     }
 
@@ -353,35 +394,50 @@ private:
     TextCursor cur_;
 };
 
+template <typename Reader>
+void read_all(Reader& r, const PlyHeader& h, const PlyElement* vertex, const VertexPlan& vplan, const PlyElement* face,
+              FacePlan* fplan) {
+    for (const auto& e : h.elements) {
+        if (&e == vertex) r.read_vertices(e, vplan);
+        else if (&e == face && fplan) r.read_faces(e, *fplan);
+        else r.skip_element(e);
+    }
+}
+
 }  // namespace
 
-geometry::PointCloud read_ply(const Input& in) {
-    const PlyHeader h = parse_header(in);
+void read_ply_elements(const Input& in, const PlyVertexSink& vertices, const PlyFaceSink* faces) {
+    const PlyHeader h = parse_ply_header(in);
     const PlyElement* vertex = nullptr;
-    for (const auto& e : h.elements)
-        if (e.name == "vertex") {
-            vertex = &e;
-            break;
-        }
+    const PlyElement* face = nullptr;
+    for (const auto& e : h.elements) {
+        if (!vertex && e.name == "vertex") vertex = &e;
+        if (!face && e.name == "face") face = &e;
+    }
     if (!vertex) parse_error(in, "PLY: the header declares no vertex element");
-    const VertexPlan plan(in, *vertex);
+    const VertexPlan vplan(in, *vertex, vertices);
+    std::optional<FacePlan> fplan;
+    if (faces && face) fplan.emplace(in, *face, *faces);
+    FacePlan* fp = fplan ? &*fplan : nullptr;
 
-    geometry::PointCloud cloud;
     if (h.encoding == PlyEncoding::Ascii) {
         AsciiReader r(in, h.data_offset);
-        for (const auto& e : h.elements) {
-            if (&e == vertex) r.read_vertices(e, plan, cloud);
-            else r.skip_element(e);
-        }
+        read_all(r, h, vertex, vplan, face, fp);
         r.finish();
     } else {
         const bool file_little = h.encoding == PlyEncoding::BinaryLittle;
         BinaryReader r(in, h.data_offset, file_little != kHostLittleEndian);
-        for (const auto& e : h.elements) {
-            if (&e == vertex) r.read_vertices(e, plan, cloud);
-            else r.skip_element(e);
-        }
+        read_all(r, h, vertex, vplan, face, fp);
     }
+}
+
+geometry::PointCloud read_ply(const Input& in) {
+    geometry::PointCloud cloud;
+    PlyVertexSink sink;
+    sink.points = &cloud.points;
+    sink.normals = &cloud.normals;
+    sink.colors = &cloud.colors;
+    read_ply_elements(in, sink, nullptr);
     return cloud;
 }
 

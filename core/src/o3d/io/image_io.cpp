@@ -8,6 +8,7 @@
 #include "o3d/io/file_bytes.h"
 #include "o3d/io/image_io_internal.h"
 #include "o3d/utility/error.h"
+#include "o3d/io/format_dispatch.h"
 
 namespace o3d::io {
 
@@ -15,43 +16,11 @@ namespace {
 
 enum class Format { Png, Jpeg, Ppm, Pgm };
 
-constexpr const char* kKnownFormats = "png, jpg, jpeg, ppm, pgm";
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    return out;
-}
-
-bool format_from_name(const std::string& name, Format& out) {
-    const std::string n = lower(name);
-    if (n == "png") out = Format::Png;
-    else if (n == "jpg" || n == "jpeg") out = Format::Jpeg;
-    else if (n == "ppm") out = Format::Ppm;
-    else if (n == "pgm") out = Format::Pgm;
-    else return false;
-    return true;
-}
+constexpr detail::FormatName<Format> kFormats[] = {
+    {"png", Format::Png}, {"jpg", Format::Jpeg}, {"jpeg", Format::Jpeg}, {"ppm", Format::Ppm}, {"pgm", Format::Pgm}};
 
 Format resolve(const std::string& format, const std::string* path) {
-    Format f;
-    if (!format.empty() && lower(format) != "auto") {
-        if (!format_from_name(format, f))
-            throw Unsupported("unknown image format '" + format + "' (known: " + kKnownFormats + ")");
-        return f;
-    }
-    if (!path)
-        throw InvalidArgument("a format is required for in-memory data (known: " + std::string(kKnownFormats) + ")");
-    const size_t slash = path->find_last_of('/');
-    const size_t dot = path->find_last_of('.');
-    const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string ext = has_ext ? path->substr(dot + 1) : std::string();
-    if (!format_from_name(ext, f))
-        throw Unsupported("cannot tell the image format of '" + *path + "' from its extension" +
-                          (has_ext ? " '." + ext + "'" : std::string(" (it has none)")) + " (known: " + kKnownFormats +
-                          ")");
-    return f;
+    return detail::resolve_format(kFormats, "image", format, path);
 }
 
 geometry::Image parse(Format f, const detail::Input& in) {

@@ -8,6 +8,7 @@
 #include "o3d/io/file_bytes.h"
 #include "o3d/io/io_internal.h"
 #include "o3d/utility/error.h"
+#include "o3d/io/format_dispatch.h"
 
 namespace o3d::io {
 namespace detail {
@@ -38,46 +39,12 @@ namespace {
 
 enum class Format { Ply, Pcd, Xyz, Xyzn, Xyzrgb, Pts };
 
-constexpr const char* kKnownFormats = "ply, pcd, xyz, xyzn, xyzrgb, pts";
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    return out;
-}
-
-bool is_auto(const std::string& format) { return format.empty() || lower(format) == "auto"; }
-
-bool format_from_name(const std::string& name, Format& out) {
-    const std::string n = lower(name);
-    if (n == "ply") out = Format::Ply;
-    else if (n == "pcd") out = Format::Pcd;
-    else if (n == "xyz") out = Format::Xyz;
-    else if (n == "xyzn") out = Format::Xyzn;
-    else if (n == "xyzrgb") out = Format::Xyzrgb;
-    else if (n == "pts") out = Format::Pts;
-    else return false;
-    return true;
-}
+constexpr detail::FormatName<Format> kFormats[] = {
+    {"ply", Format::Ply}, {"pcd", Format::Pcd}, {"xyz", Format::Xyz}, {"xyzn", Format::Xyzn},
+    {"xyzrgb", Format::Xyzrgb}, {"pts", Format::Pts}};
 
 Format resolve(const std::string& format, const std::string* path) {
-    Format f;
-    if (!is_auto(format)) {
-        if (!format_from_name(format, f))
-            throw Unsupported("unknown point-cloud format '" + format + "' (known: " + kKnownFormats + ")");
-        return f;
-    }
-    if (!path) throw InvalidArgument("a format is required for in-memory data (known: " + std::string(kKnownFormats) + ")");
-    const size_t slash = path->find_last_of('/');
-    const size_t dot = path->find_last_of('.');
-    const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string ext = has_ext ? path->substr(dot + 1) : std::string();
-    if (!format_from_name(ext, f))
-        throw Unsupported("cannot tell the point-cloud format of '" + *path + "' from its extension" +
-                          (has_ext ? " '." + ext + "'" : std::string(" (it has none)")) + " (known: " + kKnownFormats +
-                          ")");
-    return f;
+    return detail::resolve_format(kFormats, "point-cloud", format, path);
 }
 
 geometry::PointCloud parse(Format f, const detail::Input& in) {

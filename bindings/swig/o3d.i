@@ -55,6 +55,10 @@ static uint32_t o3dx_sizeof_search_param(void) { return (uint32_t)sizeof(o3d_sea
 static uint32_t o3dx_sizeof_read_options(void) { return (uint32_t)sizeof(o3d_read_options_t); }
 static uint32_t o3dx_sizeof_write_options(void) { return (uint32_t)sizeof(o3d_write_options_t); }
 static uint32_t o3dx_sizeof_icp_options(void) { return (uint32_t)sizeof(o3d_icp_options_t); }
+static uint32_t o3dx_sizeof_mesh_read_options(void) { return (uint32_t)sizeof(o3d_mesh_read_options_t); }
+static uint32_t o3dx_sizeof_mesh_write_options(void) { return (uint32_t)sizeof(o3d_mesh_write_options_t); }
+static uint32_t o3dx_sizeof_rgbd_options(void) { return (uint32_t)sizeof(o3d_rgbd_options_t); }
+static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)sizeof(o3d_depth_to_cloud_options_t); }
 %}
 
 /* ---- opaque handles and raw pointers ------------------------------------------------------- */
@@ -64,12 +68,17 @@ static uint32_t o3dx_sizeof_icp_options(void) { return (uint32_t)sizeof(o3d_icp_
   o3d_search_result_t *, const o3d_search_result_t *,
   o3d_registration_result_t *, const o3d_registration_result_t *,
   o3d_buffer_t *, const o3d_buffer_t *,
+  o3d_trianglemesh_t *, const o3d_trianglemesh_t *,
+  o3d_image_t *, const o3d_image_t *,
+  o3d_rgbd_image_t *, const o3d_rgbd_image_t *,
+  o3d_camera_trajectory_t *, const o3d_camera_trajectory_t *,
   void *, o3d_log_callback, o3d_progress_callback
 }
 %apply SWIGTYPE **O3D_PTROUT {
   o3d_pointcloud_t **, o3d_kdtree_t **, o3d_search_result_t **, o3d_registration_result_t **,
-  o3d_buffer_t **,
-  const uint8_t **out_data, const double **out_data, double **out_data,
+  o3d_buffer_t **, o3d_trianglemesh_t **, o3d_image_t **, o3d_rgbd_image_t **, o3d_camera_trajectory_t **,
+  const uint8_t **out_data, uint8_t **out_data, const double **out_data, double **out_data,
+  const int32_t **out_data, int32_t **out_data,
   const int64_t **out_offsets, const int32_t **out_indices, const double **out_distances2
 }
 
@@ -112,6 +121,41 @@ static uint32_t o3dx_sizeof_icp_options(void) { return (uint32_t)sizeof(o3d_icp_
 %clear int64_t *out;
 %clear int32_t *out;
 %clear double *out;
+
+/* ---- image.h ------------------------------------------------------------------------------- */
+/* Scalars (width, height, ...) are `out T`; the pixel bytes go through one byte[] per call. */
+%apply const uint8_t *O3D_IN { const uint8_t *data }
+%apply uint8_t *O3D_OUT { uint8_t *out }
+%apply int32_t *O3D_SOUT { int32_t *out }
+%apply size_t *O3D_SOUT { size_t *out_size }
+%include "o3d/image.h"
+%clear uint8_t *out;
+%clear int32_t *out;
+
+/* ---- camera.h ------------------------------------------------------------------------------ */
+/* o3d_pinhole_intrinsic_t is a plain struct: a (non-public) proxy class the hand-written
+ * PinholeCameraIntrinsic value converts to and from. Extrinsics are double[16]. */
+%apply const double *O3D_IN { const double extrinsic[ANY] }
+%apply double *O3D_OUT { double out_extrinsic[ANY] }
+%include "o3d/camera.h"
+
+/* ---- trianglemesh.h ------------------------------------------------------------------------ */
+/* `out` is both an array (get_array, get_index_array) and a scalar (get_volume, is_watertight, ...)
+ * in this header; SWIG matches typemaps by type and name only, so both are arrays here and the
+ * idiomatic layers pass a 1-element array for the scalars. */
+%apply const double *O3D_IN { const double *data, const double origin[ANY] }
+%apply const int32_t *O3D_IN { const int32_t *data }
+%apply double *O3D_OUT { double *out, double *out_cluster_area }
+%apply int32_t *O3D_OUT { int32_t *out, int32_t *out_triangle_clusters, int32_t *out_cluster_n_triangles }
+%apply int64_t *O3D_OUT { int64_t *out }
+%apply size_t *O3D_SOUT { size_t *out_rows, size_t *out_num_triangles, size_t *out_num_clusters }
+%include "o3d/trianglemesh.h"
+%clear double *out;
+%clear int32_t *out;
+%clear int64_t *out;
+
+/* ---- rgbd.h -------------------------------------------------------------------------------- */
+%include "o3d/rgbd.h"
 
 /* ---- io.h ---------------------------------------------------------------------------------- */
 %apply const uint8_t *O3D_IN { const uint8_t *data }

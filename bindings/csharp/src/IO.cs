@@ -71,7 +71,7 @@ namespace O3d
     /// Point-cloud I/O (o3d.io): "ply", "pcd", "xyz", "xyzn", "xyzrgb", "pts". A null/""/"auto" format
     /// means: from the file extension. Failures throw O3dException (IO: missing file; Parse: bad data).
     /// </summary>
-    public static class IO
+    public static partial class IO
     {
         public static PointCloud ReadPointCloud(string path, string format = null, ReadOptions options = null)
         {

@@ -8,7 +8,7 @@ namespace O3d
     /// double arrays. Properties copy out on get and copy in on set, in one native call each.
     /// Dispose it (or use <c>using</c>); a finalizer destroys forgotten clouds.
     /// </summary>
-    public sealed class PointCloud : NativeHandle
+    public sealed partial class PointCloud : NativeHandle
     {
         internal PointCloud(IntPtr handle) : base(handle) { }
 

@@ -522,8 +522,573 @@ static class Test
             finally { Directory.Delete(dir, true); }
         });
 
+        GeometryTests();
+
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;
     }
+
+    // ---- triangle meshes, images, cameras, RGB-D (trianglemesh.h, image.h, camera.h, rgbd.h, io.h) ----
+
+    static double Dist(double[] p, int i, double x, double y, double z)
+    {
+        double dx = p[3 * i] - x, dy = p[3 * i + 1] - y, dz = p[3 * i + 2] - z;
+        return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /// <summary>Every (x, y, z) of <paramref name="p"/> lies on the surface of the box [0,w]x[0,h]x[0,d].</summary>
+    static void OnBoxSurface(double[] p, double w, double h, double d, string what)
+    {
+        for (int i = 0; i < p.Length / 3; i++)
+        {
+            double x = p[3 * i], y = p[3 * i + 1], z = p[3 * i + 2];
+            Check(x >= -1e-9 && x <= w + 1e-9 && y >= -1e-9 && y <= h + 1e-9 && z >= -1e-9 && z <= d + 1e-9, what + ": inside " + i);
+            double face = Math.Min(Math.Min(Math.Min(Math.Abs(x), Math.Abs(w - x)), Math.Min(Math.Abs(y), Math.Abs(h - y))),
+                                   Math.Min(Math.Abs(z), Math.Abs(d - z)));
+            Check(face < 1e-9, what + ": on a face " + i);
+        }
+    }
+
+    // Synthetic depth for the back-projection tests: d(u, v) = 1 + 0.25 u + 0.5 v on a 4x3 image,
+    // pixel (2, 1) invalid (0). Camera fx = 2, fy = 3, cx = 1.5, cy = 1.
+    const int DW = 4, DH = 3;
+    static double DepthAt(int u, int v) { return (u == 2 && v == 1) ? 0 : 1 + 0.25 * u + 0.5 * v; }
+    static PinholeCameraIntrinsic DepthCamera() { return new PinholeCameraIntrinsic(DW, DH, 2, 3, 1.5, 1); }
+
+    /// <summary>The analytic back-projection, row by row (Open3D's order), minus t (world = camera - t).</summary>
+    static double[] ExpectedDepthPoints(double tx, double ty, double tz)
+    {
+        var pts = new List<double>();
+        for (int v = 0; v < DH; v++)
+            for (int u = 0; u < DW; u++)
+            {
+                double d = DepthAt(u, v);
+                if (d <= 0) continue;
+                pts.Add((u - 1.5) * d / 2 - tx); pts.Add((v - 1.0) * d / 3 - ty); pts.Add(d - tz);
+            }
+        return pts.ToArray();
+    }
+
+    static void GeometryTests()
+    {
+        Run("mesh: create_box area 6, volume 1, 8 vertices, 12 triangles", () =>
+        {
+            using (var box = TriangleMesh.CreateBox())
+            {
+                Check(box.NumVertices == 8 && box.NumTriangles == 12, "counts " + box.NumVertices + "/" + box.NumTriangles);
+                Check(box.HasVertices && box.HasTriangles && !box.HasTextures, "has arrays");
+                Near(box.GetSurfaceArea(), 6, 1e-12, "area");
+                Near(box.GetVolume(), 1, 1e-12, "volume");
+                Check(box.IsWatertight() && box.IsOrientable() && box.IsEdgeManifold(false) && box.IsVertexManifold(), "closed manifold");
+                Check(!box.IsSelfIntersecting(), "not self-intersecting");
+                Check(box.EulerPoincareCharacteristic() == 2, "Euler characteristic of a sphere-like surface");
+                AllNear(box.MinBound, new double[] { 0, 0, 0 }, 0, "min bound");
+                AllNear(box.MaxBound, new double[] { 1, 1, 1 }, 0, "max bound");
+                AllNear(box.Center, new double[] { 0.5, 0.5, 0.5 }, 1e-12, "center");
+                var v = box.Vertices;
+                for (int c = 0; c < 8; c++)
+                {
+                    double x = c & 1, y = (c >> 1) & 1, z = (c >> 2) & 1;
+                    bool found = false;
+                    for (int i = 0; i < 8; i++) found |= Dist(v, i, x, y, z) == 0;
+                    Check(found, "corner " + x + "," + y + "," + z);
+                }
+                foreach (int t in box.Triangles) Check(t >= 0 && t < 8, "triangle index in range");
+            }
+            using (var box = TriangleMesh.CreateBox(2, 3, 4))
+            {
+                Near(box.GetSurfaceArea(), 2 * (2 * 3 + 3 * 4 + 2 * 4), 1e-12, "area 2x3x4");
+                Near(box.GetVolume(), 24, 1e-12, "volume 2x3x4");
+            }
+        });
+
+        Run("mesh: primitives (counts recorded from Open3D 0.20, tools/reference/record_primitives.py)", () =>
+        {
+            Func<TriangleMesh, long, long, string, TriangleMesh> counts = (m, nv, nt, what) =>
+            {
+                Check(m.NumVertices == nv && m.NumTriangles == nt, what + ": " + m.NumVertices + "/" + m.NumTriangles);
+                return m;
+            };
+            using (var m = counts(TriangleMesh.CreateSphere(), 762, 1520, "sphere"))
+            {
+                Check(m.EulerPoincareCharacteristic() == 2 && m.IsWatertight(), "sphere closed");
+                var v = m.Vertices;
+                for (int i = 0; i < v.Length / 3; i++) Near(Dist(v, i, 0, 0, 0), 1, 1e-12, "on the unit sphere");
+            }
+            using (var m = counts(TriangleMesh.CreateCylinder(), 102, 200, "cylinder")) { }
+            using (var m = counts(TriangleMesh.CreateCone(), 22, 40, "cone")) { }
+            using (var m = counts(TriangleMesh.CreateTorus(), 600, 1200, "torus"))
+                Check(m.EulerPoincareCharacteristic() == 0, "torus Euler characteristic 0");
+            using (var m = counts(TriangleMesh.CreateArrow(), 124, 240, "arrow")) { }
+            using (var m = counts(TriangleMesh.CreateCoordinateFrame(), 1134, 2240, "frame"))
+                Check(m.HasVertexColors, "frame colored");
+            using (var m = counts(TriangleMesh.CreateTetrahedron(), 4, 4, "tetrahedron"))
+            {
+                // regular tetrahedron with circumradius 1: edge sqrt(8/3), area sqrt(3) a^2, volume a^3 / (6 sqrt 2)
+                double a = Math.Sqrt(8.0 / 3);
+                Near(m.GetSurfaceArea(), Math.Sqrt(3) * a * a, 1e-9, "tetrahedron area");
+                Near(m.GetVolume(), a * a * a / (6 * Math.Sqrt(2)), 1e-9, "tetrahedron volume");
+            }
+            using (var m = counts(TriangleMesh.CreateOctahedron(), 6, 8, "octahedron"))
+                Near(m.GetVolume(), 4.0 / 3, 1e-9, "octahedron volume (4/3 r^3)");
+            using (var m = counts(TriangleMesh.CreateIcosahedron(), 12, 20, "icosahedron")) { }
+        });
+
+        Run("mesh: arrays in and out in bulk, normals, append, clusters", () =>
+        {
+            // a unit right triangle in z = 0 plus one in z = 1, shifted
+            var verts = new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+            using (var m = new TriangleMesh(verts, new[] { 0, 1, 2 }))
+            {
+                AllNear(m.Vertices, verts, 0, "vertices round trip");
+                Check(m.Triangles.SequenceEqual(new[] { 0, 1, 2 }), "triangles round trip");
+                Check(!m.HasVertexNormals && !m.HasTriangleNormals, "no normals yet");
+                m.ComputeVertexNormals();
+                Check(m.HasVertexNormals && m.HasTriangleNormals, "normals computed");
+                AllNear(m.VertexNormals, new double[] { 0, 0, 1, 0, 0, 1, 0, 0, 1 }, 1e-12, "vertex normals +z");
+                AllNear(m.TriangleNormals, new double[] { 0, 0, 1 }, 1e-12, "triangle normal +z");
+                m.ComputeTriangleNormals(false);
+                AllNear(m.TriangleNormals, new double[] { 0, 0, 1 }, 1e-12, "unnormalized normal = cross product (area 1/2 * 2)");
+                m.VertexColors = new double[] { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+                Check(m.HasVertexColors, "colors");
+                m.TriangleUvs = new double[] { 0, 0, 1, 0, 0, 1 };
+                Check(m.HasTriangleUvs && m.TriangleUvs.Length == 6, "uvs (3 rows of 2 per triangle)");
+                m.TriangleMaterialIds = new[] { 0 };
+                Check(m.HasTriangleMaterialIds, "material ids");
+                long rows;
+                IntPtr view = m.ArrayView(MeshArray.Vertices, out rows);
+                var viewed = new double[rows * 3];
+                System.Runtime.InteropServices.Marshal.Copy(view, viewed, 0, viewed.Length);
+                Check(rows == 3 && viewed.SequenceEqual(verts), "vertex view");
+                IntPtr iview = m.IndexArrayView(MeshIndexArray.Triangles, out rows);
+                var tri = new int[3];
+                System.Runtime.InteropServices.Marshal.Copy(iview, tri, 0, 3);
+                Check(rows == 1 && tri.SequenceEqual(new[] { 0, 1, 2 }), "triangle view");
+                IntPtr mv = m.ArrayMutableView(MeshArray.Vertices, out rows);
+                System.Runtime.InteropServices.Marshal.Copy(new double[] { 2 }, 0, mv + 3 * sizeof(double), 1);
+                Near(m.Vertices[3], 2, 0, "write through the mutable view");
+                IntPtr tv = m.IndexArrayMutableView(MeshIndexArray.Triangles, out rows);
+                Check(tv != IntPtr.Zero && rows == 1, "mutable index view");
+                Near(m.GetSurfaceArea(), 1, 1e-12, "area after moving a vertex");
+
+                using (var copy = m.Clone())
+                {
+                    copy.Translate(new double[] { 0, 0, 1 });
+                    m.Append(copy);
+                }
+                Check(m.NumVertices == 6 && m.NumTriangles == 2, "appended");
+                Check(m.Triangles.SequenceEqual(new[] { 0, 1, 2, 3, 4, 5 }), "appended triangles re-indexed");
+                var cl = m.ClusterConnectedTriangles();
+                Check(cl.TriangleClusterIndices.SequenceEqual(new[] { 0, 1 }), "two clusters");
+                Check(cl.ClusterNTriangles.SequenceEqual(new[] { 1, 1 }), "cluster sizes");
+                AllNear(cl.ClusterArea, new double[] { 1, 1 }, 1e-12, "cluster areas");
+                m.Clear();
+                Check(m.NumVertices == 0 && m.NumTriangles == 0, "cleared");
+            }
+        });
+
+        Run("mesh: clean-up, transforms, processing", () =>
+        {
+            // two triangles sharing an edge, with the shared vertices duplicated, and a degenerate one
+            using (var m = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 },
+                                            new[] { 0, 1, 2, 3, 4, 5, 0, 0, 1 }))
+            {
+                m.RemoveDegenerateTriangles();
+                Check(m.NumTriangles == 2, "degenerate removed");
+                m.RemoveDuplicatedVertices();
+                Check(m.NumVertices == 4, "duplicates merged: " + m.NumVertices);
+                Near(m.GetSurfaceArea(), 1, 1e-12, "area kept");
+                Check(m.ClusterConnectedTriangles().ClusterNTriangles.Length == 1, "now edge-connected");
+                m.RemoveDuplicatedTriangles().RemoveUnreferencedVertices().RemoveNonManifoldEdges().MergeCloseVertices(1e-9);
+                Check(m.NumVertices == 4 && m.NumTriangles == 2, "nothing more to clean");
+                Check(m.EulerPoincareCharacteristic() == 1, "a disc: V - E + F = 4 - 5 + 2");
+                Check(m.IsEdgeManifold(true) && !m.IsEdgeManifold(false) && !m.IsWatertight(), "open surface");
+                ThrowsStatus(Status.InvalidArgument, () => m.GetVolume(), "volume of an open mesh");
+            }
+            using (var box = TriangleMesh.CreateBox())
+            {
+                box.Translate(new double[] { 1, 2, 3 });
+                AllNear(box.MinBound, new double[] { 1, 2, 3 }, 1e-12, "translated");
+                box.Translate(new double[] { 0, 0, 0 }, false);
+                AllNear(box.Center, new double[] { 0, 0, 0 }, 1e-12, "centered");
+                box.Scale(2, new double[] { 0, 0, 0 });
+                Near(box.GetSurfaceArea(), 24, 1e-9, "scaled area");
+                box.Rotate(new double[] { 0, -1, 0, 1, 0, 0, 0, 0, 1 });
+                Near(box.GetVolume(), 8, 1e-9, "rotated volume");
+                box.Transform(new double[] { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1 });
+                double[] lo, hi;
+                box.GetAxisAlignedBoundingBox(out lo, out hi);
+                AllNear(lo, new double[] { 0, 0, 0 }, 1e-9, "aabb min"); AllNear(hi, new double[] { 2, 2, 2 }, 1e-9, "aabb max");
+                box.PaintUniformColor(new double[] { 0.25, 0.5, 1 });
+                AllNear(box.VertexColors.Take(3).ToArray(), new double[] { 0.25, 0.5, 1 }, 0, "painted");
+                box.NormalizeNormals();
+            }
+            using (var box = TriangleMesh.CreateBox())
+            {
+                using (var sub = box.SubdivideMidpoint(1))
+                {
+                    // each of the 18 edges gets one midpoint; each triangle becomes four
+                    Check(sub.NumVertices == 26 && sub.NumTriangles == 48, "midpoint counts");
+                    Near(sub.GetSurfaceArea(), 6, 1e-12, "midpoint keeps the area");
+                }
+                using (var loop = box.SubdivideLoop(1))
+                {
+                    Check(loop.NumTriangles == 48 && loop.IsWatertight(), "loop counts");
+                    Check(loop.GetSurfaceArea() < 6, "loop shrinks the box");
+                }
+                using (var crop = box.Crop(new double[] { -0.1, -0.1, -0.1 }, new double[] { 1.1, 1.1, 0.5 }))
+                {
+                    Check(crop.NumTriangles == 2 && crop.NumVertices == 4, "crop keeps the z = 0 face");
+                    foreach (var z in crop.Vertices.Where((x, i) => i % 3 == 2)) Near(z, 0, 0, "cropped z");
+                }
+                using (var a = box.SamplePointsUniformly(500, false, 7))
+                using (var b = box.SamplePointsUniformly(500, false, 7))
+                {
+                    Check(a.Size == 500, "500 samples");
+                    Check(a.Points.SequenceEqual(b.Points), "same seed, same samples");
+                    OnBoxSurface(a.Points, 1, 1, 1, "uniform samples");
+                }
+                using (var pd = box.SamplePointsPoissonDisk(100, 5, false, 3))
+                {
+                    Check(pd.Size == 100, "poisson disk count " + pd.Size);
+                    OnBoxSurface(pd.Points, 1, 1, 1, "poisson samples");
+                }
+                using (var s = box.FilterSmoothSimple(1)) Check(s.NumVertices == 8 && s.NumTriangles == 12, "smooth simple keeps topology");
+                using (var s = box.FilterSmoothLaplacian(2)) Check(s.NumVertices == 8, "laplacian keeps topology");
+                using (var s = box.FilterSmoothTaubin(2)) Check(s.NumVertices == 8, "taubin keeps topology");
+                using (var s = box.SimplifyVertexClustering(10)) Check(s.NumTriangles < 12, "one voxel collapses the box");
+            }
+            using (var sphere = TriangleMesh.CreateSphere())
+            using (var dec = sphere.SimplifyQuadricDecimation(100))
+                Check(dec.NumTriangles <= 100 && dec.NumTriangles > 0, "decimated to " + dec.NumTriangles);
+        });
+
+        Run("mesh: written then read back equal (PLY/OFF in memory, PLY/OBJ files)", () =>
+        {
+            using (var box = TriangleMesh.CreateBox())
+            {
+                var colors = new double[24];
+                for (int i = 0; i < 24; i++) colors[i] = (i * 10 % 256) / 255.0; // exact in 8 bits
+                box.VertexColors = colors;
+                foreach (var fmt in new[] { "ply", "off" })
+                {
+                    byte[] bytes = IO.WriteTriangleMeshToMemory(box, fmt);
+                    Check(bytes.Length > 0, fmt + " bytes");
+                    using (var back = IO.ReadTriangleMeshFromMemory(bytes, fmt))
+                    {
+                        AllNear(back.Vertices, box.Vertices, 1e-6, fmt + " vertices");
+                        Check(back.Triangles.SequenceEqual(box.Triangles), fmt + " triangles");
+                        if (fmt == "ply") AllNear(back.VertexColors, colors, 1e-9, "ply colors");
+                    }
+                }
+                using (var nb = IO.WriteTriangleMeshToNativeBuffer(box, "ply", new MeshWriteOptions { WriteAscii = true }))
+                    Check(System.Text.Encoding.ASCII.GetString(nb.ToArray()).Contains("format ascii"), "ascii ply");
+                string dir = TempDir();
+                try
+                {
+                    string ply = Path.Combine(dir, "box.ply");
+                    IO.WriteTriangleMesh(ply, box, null, new MeshWriteOptions { WriteAscii = true, WriteVertexColors = false });
+                    using (var back = IO.ReadTriangleMesh(ply, null, new MeshReadOptions { EnablePostProcessing = false }))
+                    {
+                        Check(back.NumVertices == 8 && back.NumTriangles == 12 && !back.HasVertexColors, "ply file, no colors");
+                        AllNear(back.Vertices, box.Vertices, 1e-6, "ply file vertices");
+                    }
+                    string obj = Path.Combine(dir, "box.obj");
+                    IO.WriteTriangleMesh(obj, box);
+                    using (var back = IO.ReadTriangleMesh(obj))
+                    {
+                        Check(back.NumTriangles == 12, "obj triangles");
+                        Near(back.GetSurfaceArea(), 6, 1e-9, "obj area");
+                    }
+                }
+                finally { Directory.Delete(dir, true); }
+            }
+        });
+
+        Run("image: PNG round trip in memory and on disk, typed pixels", () =>
+        {
+            var px = new byte[5 * 4 * 3];
+            for (int i = 0; i < px.Length; i++) px[i] = (byte)(i * 7);
+            using (var img = Image.FromBytes(5, 4, 3, 1, px))
+            {
+                Check(img.Width == 5 && img.Height == 4 && img.NumChannels == 3 && img.BytesPerChannel == 1, "shape");
+                Check(img.Data.SequenceEqual(px), "data copy");
+                byte[] png = IO.WriteImageToMemory(img, "png");
+                Check(png.Length > 8 && png[0] == 0x89 && png[1] == (byte)'P' && png[2] == (byte)'N' && png[3] == (byte)'G', "PNG signature");
+                using (var back = IO.ReadImageFromMemory(png, "png"))
+                {
+                    Check(back.Width == 5 && back.Height == 4 && back.NumChannels == 3 && back.BytesPerChannel == 1, "png shape");
+                    Check(back.Data.SequenceEqual(px), "png pixels equal");
+                }
+                string dir = TempDir();
+                try
+                {
+                    string path = Path.Combine(dir, "img.png");
+                    IO.WriteImage(path, img);
+                    using (var back = IO.ReadImage(path)) Check(back.Data.SequenceEqual(px), "png file pixels equal");
+                    string ppm = Path.Combine(dir, "img.ppm");
+                    IO.WriteImage(ppm, img);
+                    using (var back = IO.ReadImage(ppm)) Check(back.Data.SequenceEqual(px), "ppm file pixels equal");
+                }
+                finally { Directory.Delete(dir, true); }
+                long size;
+                IntPtr v = img.DataView(out size);
+                Check(v != IntPtr.Zero && size == px.Length, "data view");
+                IntPtr mv = img.DataMutableView(out size);
+                System.Runtime.InteropServices.Marshal.WriteByte(mv, 0, 200);
+                Check(img.Data[0] == 200, "write through the mutable view");
+                using (var c = img.Clone()) Check(c.Data.SequenceEqual(img.Data), "clone");
+            }
+            var depth = new ushort[] { 0, 1, 1000, 65535, 300, 42 };
+            using (var d16 = Image.FromUInt16(3, 2, 1, depth))
+            using (var back = IO.ReadImageFromMemory(IO.WriteImageToMemory(d16, "png"), "png"))
+            {
+                Check(back.BytesPerChannel == 2 && back.ToUInt16Array().SequenceEqual(depth), "16-bit png round trip");
+            }
+            using (var gray = Image.FromBytes(8, 8, 1, 1, Enumerable.Repeat((byte)128, 64).ToArray()))
+            using (var back = IO.ReadImageFromMemory(IO.WriteImageToMemory(gray, "jpg", 95), "jpg"))
+            {
+                Check(back.Width == 8 && back.NumChannels == 1, "jpeg shape");
+                foreach (var b in back.Data) Check(Math.Abs(b - 128) <= 2, "jpeg of a flat image stays flat");
+            }
+        });
+
+        Run("image: flips, float conversion, depth conversion, filters", () =>
+        {
+            using (var row = Image.FromBytes(3, 1, 1, 1, new byte[] { 1, 2, 3 }))
+            using (var flipped = row.FlipHorizontal())
+            using (var same = row.FlipVertical())
+            {
+                Check(flipped.Data.SequenceEqual(new byte[] { 3, 2, 1 }), "flip horizontal");
+                Check(same.Data.SequenceEqual(new byte[] { 1, 2, 3 }), "flip vertical of one row");
+            }
+            using (var col = Image.FromBytes(1, 3, 1, 1, new byte[] { 1, 2, 3 }))
+            using (var flipped = col.FlipVertical())
+                Check(flipped.Data.SequenceEqual(new byte[] { 3, 2, 1 }), "flip vertical");
+            using (var g = Image.FromBytes(3, 1, 1, 1, new byte[] { 0, 255, 51 }))
+            using (var f = g.CreateFloatImage())
+            {
+                Check(f.NumChannels == 1 && f.BytesPerChannel == 4, "float image");
+                AllNear(f.ToFloatArray().Select(x => (double)x).ToArray(), new[] { 0, 1, 0.2 }, 1e-6, "8-bit / 255");
+            }
+            using (var rgb = Image.FromBytes(1, 1, 3, 1, new byte[] { 255, 0, 0 }))
+            {
+                using (var w = rgb.CreateFloatImage(ImageConvertType.Weighted)) Near(w.ToFloatArray()[0], 0.299, 1e-6, "weighted gray");
+                using (var e = rgb.CreateFloatImage(ImageConvertType.Equal)) Near(e.ToFloatArray()[0], 1.0 / 3, 1e-6, "equal gray");
+            }
+            using (var raw = Image.FromUInt16(3, 1, 1, new ushort[] { 500, 4000, 1500 }))
+            using (var m = raw.ConvertDepthToFloat(1000, 3.0))
+                AllNear(m.ToFloatArray().Select(x => (double)x).ToArray(), new[] { 0.5, 0, 1.5 }, 1e-6, "depth in metres, truncated");
+            using (var flat = Image.FromFloat(5, 4, 1, Enumerable.Repeat(0.5f, 20).ToArray()))
+            {
+                foreach (ImageFilterType t in new[] { ImageFilterType.Gaussian3, ImageFilterType.Gaussian5, ImageFilterType.Gaussian7 })
+                    using (var f = flat.Filter(t))
+                        foreach (var x in f.ToFloatArray()) Near(x, 0.5, 1e-6, t + " of a flat image");
+                foreach (ImageFilterType t in new[] { ImageFilterType.Sobel3Dx, ImageFilterType.Sobel3Dy })
+                    using (var f = flat.Filter(t))
+                        foreach (var x in f.ToFloatArray()) Near(x, 0, 1e-6, t + " of a flat image");
+            }
+            using (var img = Image.FromFloat(4, 2, 1, new float[] { 1, 3, 5, 7, 1, 3, 5, 7 }))
+            using (var half = img.Downsample())
+            {
+                Check(half.Width == 2 && half.Height == 1, "half size");
+                AllNear(half.ToFloatArray().Select(x => (double)x).ToArray(), new double[] { 2, 6 }, 1e-6, "2x2 means");
+            }
+        });
+
+        Run("camera: intrinsic presets, trajectory, JSON round trips", () =>
+        {
+            var ps = PinholeCameraIntrinsic.FromPreset(PinholeCameraIntrinsicParameters.PrimeSenseDefault);
+            Check(ps.Equals(new PinholeCameraIntrinsic(640, 480, 525, 525, 319.5, 239.5)), "PrimeSense: " + ps);
+            AllNear(ps.IntrinsicMatrix, new[] { 525, 0, 319.5, 0, 525, 239.5, 0, 0, 1 }, 0, "intrinsic matrix");
+            var k2d = PinholeCameraIntrinsic.FromPreset(PinholeCameraIntrinsicParameters.Kinect2DepthCameraDefault);
+            Check(k2d.Equals(new PinholeCameraIntrinsic(512, 424, 365.456, 365.456, 254.878, 205.395)), "Kinect2 depth: " + k2d);
+            var k2c = PinholeCameraIntrinsic.FromPreset(PinholeCameraIntrinsicParameters.Kinect2ColorCameraDefault);
+            Check(k2c.Width == 1920 && k2c.Height == 1080, "Kinect2 color size");
+            Near(k2c.Fx, 1059.9718, 1e-9, "fx"); Near(k2c.Cx, 975.7193, 1e-9, "cx"); Near(k2c.Cy, 545.9533, 1e-9, "cy");
+            Check(ps.GetHashCode() == new PinholeCameraIntrinsic(640, 480, 525, 525, 319.5, 239.5).GetHashCode(), "hash");
+            ThrowsStatus(Status.InvalidArgument, () => PinholeCameraIntrinsic.FromPreset((PinholeCameraIntrinsicParameters)99), "bad preset");
+
+            var pose = new double[] { 0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1 };
+            string dir = TempDir();
+            try
+            {
+                using (var traj = new PinholeCameraTrajectory())
+                {
+                    Check(traj.Count == 0, "empty");
+                    traj.Append(ps, pose);
+                    traj.Append(new PinholeCameraParameters(k2d, ApplyTransformIdentity()));
+                    Check(traj.Count == 2, "two poses");
+                    Check(traj[0].Intrinsic.Equals(ps), "intrinsic back");
+                    AllNear(traj[0].Extrinsic, pose, 0, "extrinsic back");
+                    ThrowsStatus(Status.InvalidArgument, () => { var p = traj[5]; }, "index out of range");
+                    var bad = (double[])pose.Clone(); bad[15] = 2;
+                    ThrowsStatus(Status.InvalidArgument, () => traj.Append(ps, bad), "last row not (0,0,0,1)");
+                    string json = Path.Combine(dir, "traj.json");
+                    IO.WritePinholeCameraTrajectory(json, traj);
+                    using (var back = IO.ReadPinholeCameraTrajectory(json))
+                    {
+                        var list = back.Parameters;
+                        Check(list.Count == 2 && list[0].Intrinsic.Equals(ps) && list[1].Intrinsic.Equals(k2d), "json intrinsics");
+                        AllNear(list[0].Extrinsic, pose, 1e-12, "json extrinsic");
+                    }
+                    string log = Path.Combine(dir, "traj.log");
+                    IO.WritePinholeCameraTrajectory(log, traj, "log");
+                    using (var back = IO.ReadPinholeCameraTrajectory(log, "log"))
+                    {
+                        Check(back.Count == 2, "log poses");
+                        AllNear(back[0].Extrinsic, pose, 1e-9, "log extrinsic");
+                        Check(back[0].Intrinsic.Equals(ps), "log intrinsic is the PrimeSense default");
+                    }
+                    traj.Clear();
+                    Check(traj.Count == 0, "cleared");
+                }
+                string ipath = Path.Combine(dir, "intrinsic.json");
+                IO.WritePinholeCameraIntrinsic(ipath, k2d);
+                Check(IO.ReadPinholeCameraIntrinsic(ipath).Equals(k2d), "intrinsic json round trip");
+                string ppath = Path.Combine(dir, "params.json");
+                IO.WritePinholeCameraParameters(ppath, new PinholeCameraParameters(ps, pose));
+                var pp = IO.ReadPinholeCameraParameters(ppath);
+                Check(pp.Intrinsic.Equals(ps), "parameters intrinsic");
+                AllNear(pp.Extrinsic, pose, 1e-12, "parameters extrinsic");
+                ThrowsStatus(Status.IO, () => IO.ReadPinholeCameraIntrinsic(Path.Combine(dir, "none.json")), "missing json");
+            }
+            finally { Directory.Delete(dir, true); }
+        });
+
+        Run("rgbd: synthetic depth image back-projected to the analytic points", () =>
+        {
+            var metres = new float[DW * DH];
+            var mm = new ushort[DW * DH];
+            for (int v = 0; v < DH; v++)
+                for (int u = 0; u < DW; u++) { metres[v * DW + u] = (float)DepthAt(u, v); mm[v * DW + u] = (ushort)(DepthAt(u, v) * 1000); }
+            var cam = DepthCamera();
+            using (var fdepth = Image.FromFloat(DW, DH, 1, metres))
+            using (var udepth = Image.FromUInt16(DW, DH, 1, mm))
+            {
+                using (var pc = PointCloud.CreateFromDepthImage(fdepth, cam))
+                    AllNear(pc.Points, ExpectedDepthPoints(0, 0, 0), 1e-6, "float depth");
+                using (var pc = PointCloud.CreateFromDepthImage(udepth, cam, null, 1000))
+                    AllNear(pc.Points, ExpectedDepthPoints(0, 0, 0), 1e-6, "uint16 depth / 1000");
+                var ext = new double[] { 1, 0, 0, 0.5, 0, 1, 0, -1, 0, 0, 1, 2, 0, 0, 0, 1 };
+                using (var pc = PointCloud.CreateFromDepthImage(fdepth, cam, ext))
+                    AllNear(pc.Points, ExpectedDepthPoints(0.5, -1, 2), 1e-6, "extrinsic inverted");
+                using (var pc = PointCloud.CreateFromDepthImage(fdepth, cam, null, 1000, 1000, 2))
+                    Check(pc.Size == 4, "stride 2 keeps pixels (0,0),(2,0),(0,2),(2,2): " + pc.Size);
+                using (var pc = PointCloud.CreateFromDepthImage(fdepth, cam, null, 1000, 2.0))
+                    // Open3D drops depth >= depth_trunc: the five pixels at 2 m or deeper
+                    Check(pc.Size == ExpectedDepthPoints(0, 0, 0).Length / 3 - 5, "depth_trunc 2: " + pc.Size);
+                using (var pc = PointCloud.CreateFromDepthImage(fdepth, cam, null, 1000, 1000, 1, false))
+                {
+                    Check(pc.Size == DW * DH, "organised cloud");
+                    Check(double.IsNaN(pc.Points[3 * (1 * DW + 2)]), "invalid pixel is NaN");
+                }
+
+                var color = new byte[DW * DH * 3];
+                for (int i = 0; i < DW * DH; i++) { color[3 * i] = (byte)(10 * i); color[3 * i + 1] = 100; color[3 * i + 2] = 200; }
+                using (var cimg = Image.FromBytes(DW, DH, 3, 1, color))
+                {
+                    using (var rgbd = RGBDImage.CreateFromColorAndDepth(cimg, udepth, 1000, 3.0, false))
+                    {
+                        using (var d = rgbd.Depth)
+                            AllNear(d.ToFloatArray().Select(x => (double)x).ToArray(), metres.Select(x => (double)x).ToArray(), 1e-6, "rgbd depth in metres");
+                        using (var c = rgbd.Color) Check(c.NumChannels == 3 && c.Data.SequenceEqual(color), "color kept");
+                        using (var pc = PointCloud.CreateFromRGBDImage(rgbd, cam))
+                        {
+                            AllNear(pc.Points, ExpectedDepthPoints(0, 0, 0), 1e-6, "rgbd points");
+                            var expect = new List<double>();
+                            for (int i = 0; i < DW * DH; i++)
+                                if (metres[i] > 0) { expect.Add(color[3 * i] / 255.0); expect.Add(100 / 255.0); expect.Add(200 / 255.0); }
+                            AllNear(pc.Colors, expect.ToArray(), 1e-6, "rgbd colors");
+                        }
+                    }
+                    using (var rgbd = RGBDImage.CreateFromColorAndDepth(cimg, udepth))
+                    using (var c = rgbd.Color)
+                    {
+                        Check(c.NumChannels == 1 && c.BytesPerChannel == 4, "intensity image");
+                        Near(c.ToFloatArray()[0], (0.587 * 100 + 0.114 * 200) / 255.0, 1e-5, "weighted intensity");
+                    }
+                    // Redwood: uint16 millimetres truncated at 4 m
+                    var far = (ushort[])mm.Clone(); far[0] = 4500;
+                    using (var fd = Image.FromUInt16(DW, DH, 1, far))
+                    using (var rgbd = RGBDImage.CreateFromRedwoodFormat(cimg, fd))
+                    using (var d = rgbd.Depth)
+                    {
+                        var got = d.ToFloatArray();
+                        Near(got[0], 0, 0, "4.5 m truncated"); Near(got[1], 1.25, 1e-6, "1.25 m kept");
+                    }
+                    using (var rgbd = RGBDImage.CreateFromTUMFormat(cimg, udepth))
+                    using (var d = rgbd.Depth) Near(d.ToFloatArray()[1], 1250 / 5000.0, 1e-6, "TUM depth scale 5000");
+                    using (var rgbd = RGBDImage.CreateFromSUNFormat(cimg, udepth)) Check(rgbd.Depth.Width == DW, "SUN reader");
+                    using (var rgbd = RGBDImage.CreateFromNYUFormat(cimg, udepth)) Check(rgbd.Depth.Height == DH, "NYU reader");
+                    using (var small = new Image(2, 2, 1, 2))
+                        ThrowsStatus(Status.InvalidArgument, () => RGBDImage.CreateFromColorAndDepth(cimg, small), "size mismatch");
+                    ThrowsStatus(Status.InvalidArgument, () => PointCloud.CreateFromDepthImage(cimg, cam), "3-channel depth");
+                }
+            }
+        });
+
+        Run("mesh: errors for bad input and misuse", () =>
+        {
+            ThrowsStatus(Status.InvalidArgument, () => TriangleMesh.CreateBox(-1, 1, 1), "negative box");
+            ThrowsStatus(Status.InvalidArgument, () => TriangleMesh.CreateSphere(1, 0), "sphere resolution 0");
+            using (var m = new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new[] { 0, 1, 5 }))
+            {
+                ThrowsStatus(Status.InvalidArgument, () => m.ComputeVertexNormals(), "triangle index out of range");
+                ThrowsStatus(Status.InvalidArgument, () => m.GetSurfaceArea(), "area with a bad index");
+                ThrowsStatus(Status.InvalidArgument, () => m.SamplePointsUniformly(10), "sampling with a bad index");
+                ThrowsStatus(Status.InvalidArgument, () => m.MergeCloseVertices(double.NaN), "NaN eps");
+                ThrowsStatus(Status.InvalidArgument, () => m.GetTexture(0), "no texture 0");
+                Throws<ArgumentException>(() => m.Vertices = new double[] { 1, 2 }, "length not a multiple of 3");
+                Throws<ArgumentNullException>(() => m.Triangles = null, "null triangles");
+                Throws<ArgumentNullException>(() => m.Append(null), "null other");
+            }
+            ThrowsStatus(Status.IO, () => IO.ReadTriangleMesh("/nonexistent/dir/none.ply"), "missing mesh file");
+            ThrowsStatus(Status.Parse, () => IO.ReadTriangleMeshFromMemory(System.Text.Encoding.ASCII.GetBytes("ply\nformat garbage\n"), "ply"), "malformed ply mesh");
+            using (var box = TriangleMesh.CreateBox())
+                ThrowsStatus(Status.Unsupported, () => IO.WriteTriangleMeshToMemory(box, "nope"), "unknown mesh format");
+        });
+
+        Run("image, camera, rgbd: errors for bad input and misuse", () =>
+        {
+            ThrowsStatus(Status.InvalidArgument, () => new Image(0, 0), "empty image");
+            ThrowsStatus(Status.InvalidArgument, () => new Image(2, 2, 2, 1), "2 channels");
+            ThrowsStatus(Status.InvalidArgument, () => Image.FromBytes(2, 2, 1, 1, new byte[3]), "data size mismatch");
+            ThrowsStatus(Status.Parse, () => IO.ReadImageFromMemory(new byte[] { 0x89, (byte)'P', (byte)'N', (byte)'G', 1, 2, 3 }, "png"), "truncated png");
+            ThrowsStatus(Status.IO, () => IO.ReadImage("/nonexistent/dir/none.png"), "missing image");
+            using (var img = new Image(2, 2))
+                ThrowsStatus(Status.InvalidArgument, () => img.Filter(ImageFilterType.Gaussian3), "filter needs float");
+            using (var f = Image.FromFloat(2, 2, 1, new float[4]))
+                Throws<O3dException>(() => IO.WriteImageToMemory(f, "png"), "float images are not written");
+            Throws<ArgumentNullException>(() => IO.WriteImage("x.png", null), "null image");
+            Throws<ArgumentNullException>(() => PointCloud.CreateFromDepthImage(null, DepthCamera()), "null depth");
+
+            var image = new Image(2, 2);
+            var traj = new PinholeCameraTrajectory();
+            image.Dispose(); traj.Dispose(); image.Dispose();
+            Throws<ObjectDisposedException>(() => { var w = image.Width; }, "image after Dispose");
+            Throws<ObjectDisposedException>(() => { var c = traj.Count; }, "trajectory after Dispose");
+            for (int i = 0; i < 50; i++) new Image(4, 4);
+            GC.Collect(); GC.WaitForPendingFinalizers();
+        });
+
+        Run("mesh: textures, Dispose", () =>
+        {
+            var mesh = TriangleMesh.CreateBox();
+            var tex = new Image(1, 1, 3, 1);
+            mesh.AddTexture(tex);
+            tex.Dispose();
+            Check(mesh.TextureCount == 1 && mesh.HasTextures, "texture copied in");
+            using (var t = mesh.GetTexture(0)) Check(t.Width == 1 && t.NumChannels == 3, "texture back");
+            mesh.ClearTextures();
+            Check(mesh.TextureCount == 0, "textures cleared");
+            mesh.Dispose(); mesh.Dispose();
+            Throws<ObjectDisposedException>(() => { var n = mesh.NumVertices; }, "mesh after Dispose");
+            for (int i = 0; i < 50; i++) TriangleMesh.CreateBox();
+            GC.Collect(); GC.WaitForPendingFinalizers();
+        });
+    }
+
+    static double[] ApplyTransformIdentity() { return new double[] { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 }; }
 }

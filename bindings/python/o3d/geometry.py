@@ -1,7 +1,15 @@
-"""o3d.geometry: PointCloud, KDTreeFlann, KDTreeSearchParam*, AxisAlignedBoundingBox."""
+"""o3d.geometry: PointCloud, TriangleMesh, Image, RGBDImage, KDTreeFlann, KDTreeSearchParam*,
+AxisAlignedBoundingBox and the enums SimplificationContraction, FilterScope, ImageFilterType."""
 import numpy as np
 
 from ._o3d import (  # noqa: F401
+    ColorToIntensityConversionType,
+    FilterScope,
+    Image,
+    ImageFilterType,
+    RGBDImage,
+    SimplificationContraction,
+    TriangleMesh,
     KDTreeFlann,
     KDTreeSearchParam,
     KDTreeSearchParamHybrid,
@@ -62,5 +70,33 @@ def _point_cloud_reduce(self):
 
 PointCloud.__reduce__ = _point_cloud_reduce
 
-__all__ = ["PointCloud", "KDTreeFlann", "KDTreeSearchParam", "KDTreeSearchParamKNN", "KDTreeSearchParamRadius",
-           "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox"]
+
+_MESH_ARRAYS = ("vertices", "vertex_normals", "vertex_colors", "triangles", "triangle_normals", "triangle_uvs",
+                "triangle_material_ids")
+
+
+def _triangle_mesh_from_state(arrays, textures):
+    """Unpickle a TriangleMesh: every array and texture, bit-exact."""
+    mesh = TriangleMesh()
+    for name, value in zip(_MESH_ARRAYS, arrays):
+        setattr(mesh, name, value)
+    mesh.textures = textures
+    return mesh
+
+
+def _triangle_mesh_reduce(self):
+    return _triangle_mesh_from_state, (tuple(np.array(getattr(self, n)) for n in _MESH_ARRAYS), self.textures)
+
+
+TriangleMesh.__reduce__ = _triangle_mesh_reduce
+
+
+def _image_reduce(self):
+    return (Image, (np.array(self),)) if not self.is_empty() else (Image, ())
+
+
+Image.__reduce__ = _image_reduce
+
+__all__ = ["PointCloud", "TriangleMesh", "Image", "RGBDImage", "SimplificationContraction", "FilterScope",
+           "ImageFilterType", "ColorToIntensityConversionType", "KDTreeFlann", "KDTreeSearchParam",
+           "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox"]

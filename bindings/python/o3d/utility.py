@@ -103,6 +103,13 @@ class Vector3iVector(_Vector):
     _cols = 3
 
 
+class Vector2dVector(_Vector):
+    """(N, 2) float64 (e.g. triangle UVs)."""
+
+    _dtypes = (np.float64,)
+    _cols = 2
+
+
 class Vector2iVector(_Vector):
     """(N, 2) int32 (e.g. correspondences)."""
 
@@ -177,6 +184,6 @@ class VerbosityContextManager:
 # A Python callback must not be called once the interpreter is shutting down.
 atexit.register(_o3d._set_log_callback, None)
 
-__all__ = ["Vector3dVector", "Vector3iVector", "Vector2iVector", "IntVector", "DoubleVector", "VerbosityLevel",
+__all__ = ["Vector3dVector", "Vector3iVector", "Vector2dVector", "Vector2iVector", "IntVector", "DoubleVector", "VerbosityLevel",
            "VerbosityContextManager", "set_verbosity_level", "get_verbosity_level", "set_log_callback",
            "set_num_threads", "get_num_threads"]

@@ -2,7 +2,7 @@
 // The extension module o3d._o3d. Registered in two passes, as Open3D's open3d_pybind.cpp: first
 // every class is declared (so signatures can name each other), then methods are defined. The
 // pure-Python package (bindings/python/o3d) sorts the names into Open3D's submodules.
-#include "common.h"
+#include "geometry_types.h"
 
 PYBIND11_MODULE(_o3d, m) {
     m.doc() = "o3d native extension (pybind11 over the o3d C API). Import o3d, not this module.";
@@ -14,6 +14,10 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_kdtree(m);
     o::declare_io(m);
     o::declare_registration(m);
+    o::declare_image(m);
+    o::declare_camera(m);
+    o::declare_trianglemesh_enums(m);
+    o::declare_trianglemesh(m);
 
     o::define_utility(m);
     o::define_pointcloud(m);
@@ -21,4 +25,10 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_kdtree(m);
     o::define_io(m);
     o::define_registration(m);
+    o::define_image(m);
+    o::define_camera(m);
+    o::define_trianglemesh(m);
+    o::define_trianglemesh_processing(m);
+    o::define_rgbd(m);
+    o::define_io_geometry(m);
 }

@@ -23,7 +23,18 @@ fn main() {
     let include_dir = env::var_os("O3D_INCLUDE_DIR").map(PathBuf::from).unwrap_or_else(|| repo.join("capi/include"));
     let include_dir = include_dir.canonicalize().unwrap_or(include_dir);
 
-    for header in ["o3d.h", "common.h", "pointcloud.h", "kdtree.h", "io.h", "registration.h"] {
+    for header in [
+        "o3d.h",
+        "common.h",
+        "pointcloud.h",
+        "kdtree.h",
+        "io.h",
+        "registration.h",
+        "image.h",
+        "camera.h",
+        "rgbd.h",
+        "trianglemesh.h",
+    ] {
         println!("cargo:rerun-if-changed={}", include_dir.join("o3d").join(header).display());
     }
     // Relink when the library is rebuilt (a stale libo3d gives "undefined symbol" at link time).

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /**
  * @file io.h
- * @brief Reading and writing point clouds: PLY, PCD, XYZ, XYZN, XYZRGB, PTS, to files or memory.
+ * @brief Reading and writing point clouds (PLY, PCD, XYZ, XYZN, XYZRGB, PTS), triangle meshes (PLY, OBJ,
+ * STL, OFF, glTF/GLB), images (PNG, JPEG, PPM, PGM) and camera models (JSON, .log), to files or memory.
  *
  * Formats are named as in Open3D: "ply", "pcd", "xyz", "xyzn", "xyzrgb", "pts". A NULL, "" or "auto"
  * format means: from the file extension (case-insensitive). Paths are UTF-8.
@@ -12,7 +13,10 @@
 #define O3D_IO_H
 
 #include "o3d/common.h"
+#include "o3d/camera.h"
+#include "o3d/image.h"
 #include "o3d/pointcloud.h"
+#include "o3d/trianglemesh.h"
 
 O3D_BEGIN_DECL
 
@@ -49,6 +53,80 @@ O3D_API o3d_status o3d_io_read_point_cloud_from_memory(o3d_pointcloud_t** out, c
  */
 O3D_API o3d_status o3d_io_write_point_cloud_to_memory(o3d_buffer_t** out, const o3d_pointcloud_t* pc,
                                                       const char* format, const o3d_write_options_t* opts);
+
+/* ---- Triangle meshes: "ply", "obj", "stl", "off", "gltf", "glb" ---- */
+
+/** o3d.io.read_triangle_mesh keyword arguments. */
+typedef struct o3d_mesh_read_options {
+    uint32_t struct_size;           /**< sizeof(o3d_mesh_read_options_t) */
+    int32_t enable_post_processing; /**< merge duplicated vertices and drop degenerate triangles; default 0 */
+} o3d_mesh_read_options_t;
+
+/** o3d.io.write_triangle_mesh keyword arguments. */
+typedef struct o3d_mesh_write_options {
+    uint32_t struct_size;         /**< sizeof(o3d_mesh_write_options_t) */
+    int32_t write_ascii;          /**< PLY/STL: text instead of binary; default 0 */
+    int32_t compressed;           /**< accepted for Open3D compatibility; no format here compresses; default 0 */
+    int32_t write_vertex_normals; /**< default 1 */
+    int32_t write_vertex_colors;  /**< default 1 */
+    int32_t write_triangle_uvs;   /**< default 1 */
+} o3d_mesh_write_options_t;
+
+O3D_API o3d_status o3d_mesh_read_options_init(o3d_mesh_read_options_t* opts, uint32_t struct_size);
+O3D_API o3d_status o3d_mesh_write_options_init(o3d_mesh_write_options_t* opts, uint32_t struct_size);
+
+/**
+ * @brief Read a mesh. OBJ reads its .mtl and texture images (paths relative to the OBJ); glTF reads its
+ * buffers and images. @see o3d.io.read_triangle_mesh
+ */
+O3D_API o3d_status o3d_io_read_triangle_mesh(o3d_trianglemesh_t** out, const char* path, const char* format,
+                                             const o3d_mesh_read_options_t* opts);
+/** @brief Write a mesh (OBJ also writes a .mtl and PNG textures beside it). @see o3d.io.write_triangle_mesh */
+O3D_API o3d_status o3d_io_write_triangle_mesh(const char* path, const o3d_trianglemesh_t* mesh, const char* format,
+                                              const o3d_mesh_write_options_t* opts);
+/** @brief Read a mesh from memory: "ply", "stl", "off", "obj" (no materials) or "glb" (embedded data). */
+O3D_API o3d_status o3d_io_read_triangle_mesh_from_memory(o3d_trianglemesh_t** out, const uint8_t* data,
+                                                         size_t size, const char* format,
+                                                         const o3d_mesh_read_options_t* opts);
+/** @brief Encode a mesh in one of the formats of read_triangle_mesh_from_memory into a new buffer. */
+O3D_API o3d_status o3d_io_write_triangle_mesh_to_memory(o3d_buffer_t** out, const o3d_trianglemesh_t* mesh,
+                                                        const char* format, const o3d_mesh_write_options_t* opts);
+
+/* ---- Images: "png", "jpg"/"jpeg", "ppm", "pgm" (binary P6/P5, 8 or 16 bit) ---- */
+
+/** @brief Read an image (format from the extension when NULL/""/"auto"). @see o3d.io.read_image */
+O3D_API o3d_status o3d_io_read_image(o3d_image_t** out, const char* path, const char* format);
+/**
+ * @brief Write an image. `quality` is JPEG quality 1..100, or -1 for the default (90); others ignore it.
+ * PNG and PGM take 8/16-bit 1 channel, PNG and PPM 8/16-bit 3 channels, PNG 4 channels, JPEG 8-bit 1 or 3.
+ * Float images are not written (convert first). @see o3d.io.write_image
+ */
+O3D_API o3d_status o3d_io_write_image(const char* path, const o3d_image_t* image, const char* format,
+                                      int32_t quality);
+O3D_API o3d_status o3d_io_read_image_from_memory(o3d_image_t** out, const uint8_t* data, size_t size,
+                                                 const char* format);
+O3D_API o3d_status o3d_io_write_image_to_memory(o3d_buffer_t** out, const o3d_image_t* image, const char* format,
+                                                int32_t quality);
+
+/* ---- Camera models: Open3D's JSON layouts; trajectories also as .log ---- */
+
+/** @brief Read a PinholeCameraIntrinsic JSON file. @see o3d.io.read_pinhole_camera_intrinsic */
+O3D_API o3d_status o3d_io_read_pinhole_camera_intrinsic(const char* path, o3d_pinhole_intrinsic_t* out);
+O3D_API o3d_status o3d_io_write_pinhole_camera_intrinsic(const char* path, const o3d_pinhole_intrinsic_t* intrinsic);
+/** @brief Read a PinholeCameraParameters JSON file (either output may be NULL). */
+O3D_API o3d_status o3d_io_read_pinhole_camera_parameters(const char* path, o3d_pinhole_intrinsic_t* out_intrinsic,
+                                                         double out_extrinsic[16]);
+O3D_API o3d_status o3d_io_write_pinhole_camera_parameters(const char* path, const o3d_pinhole_intrinsic_t* intrinsic,
+                                                          const double extrinsic[16]);
+/**
+ * @brief Read a trajectory: "json" (PinholeCameraTrajectory) or "log" (camera-to-world poses; each
+ * extrinsic is the pose's inverse and the intrinsic the PrimeSense default), NULL/"auto": by extension.
+ */
+O3D_API o3d_status o3d_io_read_pinhole_camera_trajectory(o3d_camera_trajectory_t** out, const char* path,
+                                                         const char* format);
+O3D_API o3d_status o3d_io_write_pinhole_camera_trajectory(const char* path,
+                                                          const o3d_camera_trajectory_t* trajectory,
+                                                          const char* format);
 
 O3D_END_DECL
 

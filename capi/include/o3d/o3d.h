@@ -11,5 +11,9 @@
 #include "o3d/kdtree.h"
 #include "o3d/io.h"
 #include "o3d/registration.h"
+#include "o3d/image.h"
+#include "o3d/camera.h"
+#include "o3d/rgbd.h"
+#include "o3d/trianglemesh.h"
 
 #endif /* O3D_O3D_H */

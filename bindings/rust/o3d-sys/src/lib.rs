@@ -448,6 +448,109 @@ extern "C" {
 }
 
 // ---------------------------------------------------------------------------------------------
+// io.h: triangle meshes, images, camera models
+// ---------------------------------------------------------------------------------------------
+
+/// Mesh read options (`o3d_mesh_read_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct o3d_mesh_read_options {
+    pub struct_size: u32,
+    pub enable_post_processing: i32,
+}
+pub type o3d_mesh_read_options_t = o3d_mesh_read_options;
+
+/// Mesh write options (`o3d_mesh_write_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct o3d_mesh_write_options {
+    pub struct_size: u32,
+    pub write_ascii: i32,
+    pub compressed: i32,
+    pub write_vertex_normals: i32,
+    pub write_vertex_colors: i32,
+    pub write_triangle_uvs: i32,
+}
+pub type o3d_mesh_write_options_t = o3d_mesh_write_options;
+
+extern "C" {
+    pub fn o3d_mesh_read_options_init(opts: *mut o3d_mesh_read_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_mesh_write_options_init(opts: *mut o3d_mesh_write_options_t, struct_size: u32) -> o3d_status;
+
+    pub fn o3d_io_read_triangle_mesh(
+        out: *mut *mut o3d_trianglemesh_t,
+        path: *const c_char,
+        format: *const c_char,
+        opts: *const o3d_mesh_read_options_t,
+    ) -> o3d_status;
+    pub fn o3d_io_write_triangle_mesh(
+        path: *const c_char,
+        mesh: *const o3d_trianglemesh_t,
+        format: *const c_char,
+        opts: *const o3d_mesh_write_options_t,
+    ) -> o3d_status;
+    pub fn o3d_io_read_triangle_mesh_from_memory(
+        out: *mut *mut o3d_trianglemesh_t,
+        data: *const u8,
+        size: usize,
+        format: *const c_char,
+        opts: *const o3d_mesh_read_options_t,
+    ) -> o3d_status;
+    pub fn o3d_io_write_triangle_mesh_to_memory(
+        out: *mut *mut o3d_buffer_t,
+        mesh: *const o3d_trianglemesh_t,
+        format: *const c_char,
+        opts: *const o3d_mesh_write_options_t,
+    ) -> o3d_status;
+
+    pub fn o3d_io_read_image(out: *mut *mut o3d_image_t, path: *const c_char, format: *const c_char) -> o3d_status;
+    pub fn o3d_io_write_image(
+        path: *const c_char,
+        image: *const o3d_image_t,
+        format: *const c_char,
+        quality: i32,
+    ) -> o3d_status;
+    pub fn o3d_io_read_image_from_memory(
+        out: *mut *mut o3d_image_t,
+        data: *const u8,
+        size: usize,
+        format: *const c_char,
+    ) -> o3d_status;
+    pub fn o3d_io_write_image_to_memory(
+        out: *mut *mut o3d_buffer_t,
+        image: *const o3d_image_t,
+        format: *const c_char,
+        quality: i32,
+    ) -> o3d_status;
+
+    pub fn o3d_io_read_pinhole_camera_intrinsic(path: *const c_char, out: *mut o3d_pinhole_intrinsic_t) -> o3d_status;
+    pub fn o3d_io_write_pinhole_camera_intrinsic(
+        path: *const c_char,
+        intrinsic: *const o3d_pinhole_intrinsic_t,
+    ) -> o3d_status;
+    pub fn o3d_io_read_pinhole_camera_parameters(
+        path: *const c_char,
+        out_intrinsic: *mut o3d_pinhole_intrinsic_t,
+        out_extrinsic: *mut f64,
+    ) -> o3d_status;
+    pub fn o3d_io_write_pinhole_camera_parameters(
+        path: *const c_char,
+        intrinsic: *const o3d_pinhole_intrinsic_t,
+        extrinsic: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_io_read_pinhole_camera_trajectory(
+        out: *mut *mut o3d_camera_trajectory_t,
+        path: *const c_char,
+        format: *const c_char,
+    ) -> o3d_status;
+    pub fn o3d_io_write_pinhole_camera_trajectory(
+        path: *const c_char,
+        trajectory: *const o3d_camera_trajectory_t,
+        format: *const c_char,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
 // registration.h
 // ---------------------------------------------------------------------------------------------
 
@@ -520,4 +623,484 @@ extern "C" {
         capacity: usize,
         out_n: *mut usize,
     ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// image.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque 2-D image (`o3d_image_t`).
+#[repr(C)]
+pub struct o3d_image {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_image_t = o3d_image;
+
+pub const O3D_IMAGE_FILTER_GAUSSIAN3: i32 = 0;
+pub const O3D_IMAGE_FILTER_GAUSSIAN5: i32 = 1;
+pub const O3D_IMAGE_FILTER_GAUSSIAN7: i32 = 2;
+pub const O3D_IMAGE_FILTER_SOBEL3_DX: i32 = 3;
+pub const O3D_IMAGE_FILTER_SOBEL3_DY: i32 = 4;
+
+pub const O3D_IMAGE_CONVERT_EQUAL: i32 = 0;
+pub const O3D_IMAGE_CONVERT_WEIGHTED: i32 = 1;
+
+extern "C" {
+    pub fn o3d_image_create(
+        out: *mut *mut o3d_image_t,
+        width: i32,
+        height: i32,
+        num_channels: i32,
+        bytes_per_channel: i32,
+    ) -> o3d_status;
+    pub fn o3d_image_create_from_data(
+        out: *mut *mut o3d_image_t,
+        width: i32,
+        height: i32,
+        num_channels: i32,
+        bytes_per_channel: i32,
+        data: *const u8,
+        size: usize,
+    ) -> o3d_status;
+    pub fn o3d_image_destroy(image: *mut o3d_image_t);
+    pub fn o3d_image_clone(out: *mut *mut o3d_image_t, src: *const o3d_image_t) -> o3d_status;
+
+    pub fn o3d_image_width(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_image_height(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_image_num_channels(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_image_bytes_per_channel(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
+
+    pub fn o3d_image_data_view(image: *const o3d_image_t, out_data: *mut *const u8, out_size: *mut usize)
+        -> o3d_status;
+    pub fn o3d_image_data_mutable_view(
+        image: *mut o3d_image_t,
+        out_data: *mut *mut u8,
+        out_size: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_image_get_data(
+        image: *const o3d_image_t,
+        out: *mut u8,
+        capacity: usize,
+        out_size: *mut usize,
+    ) -> o3d_status;
+
+    pub fn o3d_image_filter(out: *mut *mut o3d_image_t, image: *const o3d_image_t, filter_type: i32) -> o3d_status;
+    pub fn o3d_image_downsample(out: *mut *mut o3d_image_t, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_flip_vertical(out: *mut *mut o3d_image_t, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_flip_horizontal(out: *mut *mut o3d_image_t, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_create_float_image(
+        out: *mut *mut o3d_image_t,
+        image: *const o3d_image_t,
+        convert_type: i32,
+    ) -> o3d_status;
+    pub fn o3d_image_convert_depth_to_float(
+        out: *mut *mut o3d_image_t,
+        image: *const o3d_image_t,
+        depth_scale: f64,
+        depth_trunc: f64,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// camera.h
+// ---------------------------------------------------------------------------------------------
+
+/// Pinhole camera intrinsic (`o3d_pinhole_intrinsic_t`): a plain value struct with a frozen layout.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct o3d_pinhole_intrinsic {
+    pub width: i32,
+    pub height: i32,
+    pub fx: f64,
+    pub fy: f64,
+    pub cx: f64,
+    pub cy: f64,
+}
+pub type o3d_pinhole_intrinsic_t = o3d_pinhole_intrinsic;
+
+pub const O3D_INTRINSIC_PRIMESENSE_DEFAULT: i32 = 0;
+pub const O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT: i32 = 1;
+pub const O3D_INTRINSIC_KINECT2_COLOR_DEFAULT: i32 = 2;
+
+/// Opaque camera trajectory (`o3d_camera_trajectory_t`).
+#[repr(C)]
+pub struct o3d_camera_trajectory {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_camera_trajectory_t = o3d_camera_trajectory;
+
+extern "C" {
+    pub fn o3d_pinhole_intrinsic_set_preset(out: *mut o3d_pinhole_intrinsic_t, preset: i32) -> o3d_status;
+
+    pub fn o3d_camera_trajectory_create(out: *mut *mut o3d_camera_trajectory_t) -> o3d_status;
+    pub fn o3d_camera_trajectory_destroy(trajectory: *mut o3d_camera_trajectory_t);
+    pub fn o3d_camera_trajectory_size(trajectory: *const o3d_camera_trajectory_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_camera_trajectory_get(
+        trajectory: *const o3d_camera_trajectory_t,
+        index: usize,
+        out_intrinsic: *mut o3d_pinhole_intrinsic_t,
+        out_extrinsic: *mut f64,
+    ) -> o3d_status;
+    pub fn o3d_camera_trajectory_append(
+        trajectory: *mut o3d_camera_trajectory_t,
+        intrinsic: *const o3d_pinhole_intrinsic_t,
+        extrinsic: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_camera_trajectory_clear(trajectory: *mut o3d_camera_trajectory_t) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// rgbd.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque RGB-D image (`o3d_rgbd_image_t`).
+#[repr(C)]
+pub struct o3d_rgbd_image {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_rgbd_image_t = o3d_rgbd_image;
+
+/// RGBDImage.create_from_color_and_depth options (`o3d_rgbd_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct o3d_rgbd_options {
+    pub struct_size: u32,
+    pub depth_scale: f64,
+    pub depth_trunc: f64,
+    pub convert_rgb_to_intensity: i32,
+}
+pub type o3d_rgbd_options_t = o3d_rgbd_options;
+
+pub const O3D_RGBD_FORMAT_REDWOOD: i32 = 0;
+pub const O3D_RGBD_FORMAT_TUM: i32 = 1;
+pub const O3D_RGBD_FORMAT_SUN: i32 = 2;
+pub const O3D_RGBD_FORMAT_NYU: i32 = 3;
+
+/// PointCloud.create_from_depth_image options (`o3d_depth_to_cloud_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct o3d_depth_to_cloud_options {
+    pub struct_size: u32,
+    pub depth_scale: f64,
+    pub depth_trunc: f64,
+    pub stride: i32,
+    pub project_valid_depth_only: i32,
+}
+pub type o3d_depth_to_cloud_options_t = o3d_depth_to_cloud_options;
+
+extern "C" {
+    pub fn o3d_rgbd_options_init(opts: *mut o3d_rgbd_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_rgbd_image_create_from_color_and_depth(
+        out: *mut *mut o3d_rgbd_image_t,
+        color: *const o3d_image_t,
+        depth: *const o3d_image_t,
+        opts: *const o3d_rgbd_options_t,
+    ) -> o3d_status;
+    pub fn o3d_rgbd_image_create_from_dataset_format(
+        out: *mut *mut o3d_rgbd_image_t,
+        format: i32,
+        color: *const o3d_image_t,
+        depth: *const o3d_image_t,
+        convert_rgb_to_intensity: i32,
+    ) -> o3d_status;
+    pub fn o3d_rgbd_image_destroy(rgbd: *mut o3d_rgbd_image_t);
+    pub fn o3d_rgbd_image_get_color(out: *mut *mut o3d_image_t, rgbd: *const o3d_rgbd_image_t) -> o3d_status;
+    pub fn o3d_rgbd_image_get_depth(out: *mut *mut o3d_image_t, rgbd: *const o3d_rgbd_image_t) -> o3d_status;
+
+    pub fn o3d_depth_to_cloud_options_init(opts: *mut o3d_depth_to_cloud_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_pointcloud_create_from_depth_image(
+        out: *mut *mut o3d_pointcloud_t,
+        depth: *const o3d_image_t,
+        intrinsic: *const o3d_pinhole_intrinsic_t,
+        extrinsic: *const f64,
+        opts: *const o3d_depth_to_cloud_options_t,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_create_from_rgbd_image(
+        out: *mut *mut o3d_pointcloud_t,
+        rgbd: *const o3d_rgbd_image_t,
+        intrinsic: *const o3d_pinhole_intrinsic_t,
+        extrinsic: *const f64,
+        project_valid_depth_only: i32,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// trianglemesh.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque triangle mesh (`o3d_trianglemesh_t`).
+#[repr(C)]
+pub struct o3d_trianglemesh {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_trianglemesh_t = o3d_trianglemesh;
+
+pub const O3D_MESH_VERTICES: i32 = 0;
+pub const O3D_MESH_VERTEX_NORMALS: i32 = 1;
+pub const O3D_MESH_VERTEX_COLORS: i32 = 2;
+pub const O3D_MESH_TRIANGLE_NORMALS: i32 = 3;
+pub const O3D_MESH_TRIANGLE_UVS: i32 = 4;
+pub const O3D_MESH_TRIANGLES: i32 = 100;
+pub const O3D_MESH_TRIANGLE_MATERIAL_IDS: i32 = 101;
+
+pub const O3D_SIMPLIFICATION_AVERAGE: i32 = 0;
+pub const O3D_SIMPLIFICATION_QUADRIC: i32 = 1;
+
+pub const O3D_FILTER_SCOPE_ALL: i32 = 0;
+pub const O3D_FILTER_SCOPE_COLOR: i32 = 1;
+pub const O3D_FILTER_SCOPE_NORMAL: i32 = 2;
+pub const O3D_FILTER_SCOPE_VERTEX: i32 = 3;
+
+extern "C" {
+    // Container.
+    pub fn o3d_trianglemesh_create(out: *mut *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_destroy(mesh: *mut o3d_trianglemesh_t);
+    pub fn o3d_trianglemesh_clone(out: *mut *mut o3d_trianglemesh_t, src: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_clear(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_num_vertices(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_trianglemesh_num_triangles(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_trianglemesh_has_array(mesh: *const o3d_trianglemesh_t, which: i32, out: *mut i32) -> o3d_status;
+
+    pub fn o3d_trianglemesh_set_array(
+        mesh: *mut o3d_trianglemesh_t,
+        which: i32,
+        data: *const f64,
+        rows: usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_get_array(
+        mesh: *const o3d_trianglemesh_t,
+        which: i32,
+        out: *mut f64,
+        capacity: usize,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_array_view(
+        mesh: *const o3d_trianglemesh_t,
+        which: i32,
+        out_data: *mut *const f64,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_array_mutable_view(
+        mesh: *mut o3d_trianglemesh_t,
+        which: i32,
+        out_data: *mut *mut f64,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_set_index_array(
+        mesh: *mut o3d_trianglemesh_t,
+        which: i32,
+        data: *const i32,
+        rows: usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_get_index_array(
+        mesh: *const o3d_trianglemesh_t,
+        which: i32,
+        out: *mut i32,
+        capacity: usize,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_index_array_view(
+        mesh: *const o3d_trianglemesh_t,
+        which: i32,
+        out_data: *mut *const i32,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_index_array_mutable_view(
+        mesh: *mut o3d_trianglemesh_t,
+        which: i32,
+        out_data: *mut *mut i32,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+
+    pub fn o3d_trianglemesh_texture_count(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_trianglemesh_get_texture(
+        out: *mut *mut o3d_image_t,
+        mesh: *const o3d_trianglemesh_t,
+        index: usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_add_texture(mesh: *mut o3d_trianglemesh_t, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_trianglemesh_clear_textures(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+
+    pub fn o3d_trianglemesh_append(mesh: *mut o3d_trianglemesh_t, other: *const o3d_trianglemesh_t) -> o3d_status;
+
+    // Normals, colors, transforms, bounds.
+    pub fn o3d_trianglemesh_compute_vertex_normals(mesh: *mut o3d_trianglemesh_t, normalized: i32) -> o3d_status;
+    pub fn o3d_trianglemesh_compute_triangle_normals(mesh: *mut o3d_trianglemesh_t, normalized: i32) -> o3d_status;
+    pub fn o3d_trianglemesh_normalize_normals(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_paint_uniform_color(mesh: *mut o3d_trianglemesh_t, rgb: *const f64) -> o3d_status;
+    pub fn o3d_trianglemesh_transform(mesh: *mut o3d_trianglemesh_t, transform: *const f64) -> o3d_status;
+    pub fn o3d_trianglemesh_translate(
+        mesh: *mut o3d_trianglemesh_t,
+        translation: *const f64,
+        relative: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_rotate(
+        mesh: *mut o3d_trianglemesh_t,
+        rotation: *const f64,
+        center: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_scale(mesh: *mut o3d_trianglemesh_t, scale: f64, center: *const f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_min_bound(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_max_bound(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_center(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_axis_aligned_bounding_box(
+        mesh: *const o3d_trianglemesh_t,
+        out_min: *mut f64,
+        out_max: *mut f64,
+    ) -> o3d_status;
+
+    // Clean-up.
+    pub fn o3d_trianglemesh_remove_duplicated_vertices(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_remove_duplicated_triangles(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_remove_degenerate_triangles(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_remove_unreferenced_vertices(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_remove_non_manifold_edges(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_merge_close_vertices(mesh: *mut o3d_trianglemesh_t, eps: f64) -> o3d_status;
+
+    // Queries.
+    pub fn o3d_trianglemesh_get_surface_area(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_volume(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_is_watertight(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_is_edge_manifold(
+        mesh: *const o3d_trianglemesh_t,
+        allow_boundary_edges: i32,
+        out: *mut i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_is_vertex_manifold(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_is_self_intersecting(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_is_orientable(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_euler_poincare_characteristic(mesh: *const o3d_trianglemesh_t, out: *mut i64)
+        -> o3d_status;
+    pub fn o3d_trianglemesh_cluster_connected_triangles(
+        mesh: *const o3d_trianglemesh_t,
+        out_triangle_clusters: *mut i32,
+        out_cluster_n_triangles: *mut i32,
+        out_cluster_area: *mut f64,
+        capacity: usize,
+        out_num_triangles: *mut usize,
+        out_num_clusters: *mut usize,
+    ) -> o3d_status;
+
+    // Processing.
+    pub fn o3d_trianglemesh_sample_points_uniformly(
+        out: *mut *mut o3d_pointcloud_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_points: usize,
+        use_triangle_normal: i32,
+        seed: u64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_sample_points_poisson_disk(
+        out: *mut *mut o3d_pointcloud_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_points: usize,
+        init_factor: f64,
+        use_triangle_normal: i32,
+        seed: u64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_simplify_vertex_clustering(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        voxel_size: f64,
+        contraction: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_simplify_quadric_decimation(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        target_number_of_triangles: usize,
+        maximum_error: f64,
+        boundary_weight: f64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_filter_smooth_simple(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_iterations: i32,
+        filter_scope: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_filter_smooth_laplacian(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_iterations: i32,
+        lambda_filter: f64,
+        filter_scope: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_filter_smooth_taubin(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_iterations: i32,
+        lambda_filter: f64,
+        mu: f64,
+        filter_scope: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_subdivide_midpoint(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_iterations: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_subdivide_loop(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        number_of_iterations: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_crop_aabb(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        min_bound: *const f64,
+        max_bound: *const f64,
+    ) -> o3d_status;
+
+    // Primitives.
+    pub fn o3d_trianglemesh_create_box(
+        out: *mut *mut o3d_trianglemesh_t,
+        width: f64,
+        height: f64,
+        depth: f64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_sphere(
+        out: *mut *mut o3d_trianglemesh_t,
+        radius: f64,
+        resolution: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_cylinder(
+        out: *mut *mut o3d_trianglemesh_t,
+        radius: f64,
+        height: f64,
+        resolution: i32,
+        split: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_cone(
+        out: *mut *mut o3d_trianglemesh_t,
+        radius: f64,
+        height: f64,
+        resolution: i32,
+        split: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_torus(
+        out: *mut *mut o3d_trianglemesh_t,
+        torus_radius: f64,
+        tube_radius: f64,
+        radial_resolution: i32,
+        tubular_resolution: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_arrow(
+        out: *mut *mut o3d_trianglemesh_t,
+        cylinder_radius: f64,
+        cone_radius: f64,
+        cylinder_height: f64,
+        cone_height: f64,
+        resolution: i32,
+        cylinder_split: i32,
+        cone_split: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_coordinate_frame(
+        out: *mut *mut o3d_trianglemesh_t,
+        size: f64,
+        origin: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_create_tetrahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
+    pub fn o3d_trianglemesh_create_octahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
+    pub fn o3d_trianglemesh_create_icosahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
 }

@@ -41,6 +41,75 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_icp_options_t, num_threads)", offset_of!(o3d_icp_options_t, num_threads), 36),
         ("offsetof(o3d_icp_options_t, progress)", offset_of!(o3d_icp_options_t, progress), 40),
         ("offsetof(o3d_icp_options_t, user_data)", offset_of!(o3d_icp_options_t, user_data), 48),
+        ("sizeof(o3d_pinhole_intrinsic_t)", size_of::<o3d_pinhole_intrinsic_t>(), 40),
+        ("_Alignof(o3d_pinhole_intrinsic_t)", align_of::<o3d_pinhole_intrinsic_t>(), 8),
+        ("offsetof(o3d_pinhole_intrinsic_t, width)", offset_of!(o3d_pinhole_intrinsic_t, width), 0),
+        ("offsetof(o3d_pinhole_intrinsic_t, height)", offset_of!(o3d_pinhole_intrinsic_t, height), 4),
+        ("offsetof(o3d_pinhole_intrinsic_t, fx)", offset_of!(o3d_pinhole_intrinsic_t, fx), 8),
+        ("offsetof(o3d_pinhole_intrinsic_t, fy)", offset_of!(o3d_pinhole_intrinsic_t, fy), 16),
+        ("offsetof(o3d_pinhole_intrinsic_t, cx)", offset_of!(o3d_pinhole_intrinsic_t, cx), 24),
+        ("offsetof(o3d_pinhole_intrinsic_t, cy)", offset_of!(o3d_pinhole_intrinsic_t, cy), 32),
+        ("sizeof(o3d_rgbd_options_t)", size_of::<o3d_rgbd_options_t>(), 32),
+        ("_Alignof(o3d_rgbd_options_t)", align_of::<o3d_rgbd_options_t>(), 8),
+        ("offsetof(o3d_rgbd_options_t, struct_size)", offset_of!(o3d_rgbd_options_t, struct_size), 0),
+        ("offsetof(o3d_rgbd_options_t, depth_scale)", offset_of!(o3d_rgbd_options_t, depth_scale), 8),
+        ("offsetof(o3d_rgbd_options_t, depth_trunc)", offset_of!(o3d_rgbd_options_t, depth_trunc), 16),
+        (
+            "offsetof(o3d_rgbd_options_t, convert_rgb_to_intensity)",
+            offset_of!(o3d_rgbd_options_t, convert_rgb_to_intensity),
+            24,
+        ),
+        ("sizeof(o3d_depth_to_cloud_options_t)", size_of::<o3d_depth_to_cloud_options_t>(), 32),
+        ("_Alignof(o3d_depth_to_cloud_options_t)", align_of::<o3d_depth_to_cloud_options_t>(), 8),
+        (
+            "offsetof(o3d_depth_to_cloud_options_t, struct_size)",
+            offset_of!(o3d_depth_to_cloud_options_t, struct_size),
+            0,
+        ),
+        (
+            "offsetof(o3d_depth_to_cloud_options_t, depth_scale)",
+            offset_of!(o3d_depth_to_cloud_options_t, depth_scale),
+            8,
+        ),
+        (
+            "offsetof(o3d_depth_to_cloud_options_t, depth_trunc)",
+            offset_of!(o3d_depth_to_cloud_options_t, depth_trunc),
+            16,
+        ),
+        ("offsetof(o3d_depth_to_cloud_options_t, stride)", offset_of!(o3d_depth_to_cloud_options_t, stride), 24),
+        (
+            "offsetof(o3d_depth_to_cloud_options_t, project_valid_depth_only)",
+            offset_of!(o3d_depth_to_cloud_options_t, project_valid_depth_only),
+            28,
+        ),
+        ("sizeof(o3d_mesh_read_options_t)", size_of::<o3d_mesh_read_options_t>(), 8),
+        ("_Alignof(o3d_mesh_read_options_t)", align_of::<o3d_mesh_read_options_t>(), 4),
+        ("offsetof(o3d_mesh_read_options_t, struct_size)", offset_of!(o3d_mesh_read_options_t, struct_size), 0),
+        (
+            "offsetof(o3d_mesh_read_options_t, enable_post_processing)",
+            offset_of!(o3d_mesh_read_options_t, enable_post_processing),
+            4,
+        ),
+        ("sizeof(o3d_mesh_write_options_t)", size_of::<o3d_mesh_write_options_t>(), 24),
+        ("_Alignof(o3d_mesh_write_options_t)", align_of::<o3d_mesh_write_options_t>(), 4),
+        ("offsetof(o3d_mesh_write_options_t, struct_size)", offset_of!(o3d_mesh_write_options_t, struct_size), 0),
+        ("offsetof(o3d_mesh_write_options_t, write_ascii)", offset_of!(o3d_mesh_write_options_t, write_ascii), 4),
+        ("offsetof(o3d_mesh_write_options_t, compressed)", offset_of!(o3d_mesh_write_options_t, compressed), 8),
+        (
+            "offsetof(o3d_mesh_write_options_t, write_vertex_normals)",
+            offset_of!(o3d_mesh_write_options_t, write_vertex_normals),
+            12,
+        ),
+        (
+            "offsetof(o3d_mesh_write_options_t, write_vertex_colors)",
+            offset_of!(o3d_mesh_write_options_t, write_vertex_colors),
+            16,
+        ),
+        (
+            "offsetof(o3d_mesh_write_options_t, write_triangle_uvs)",
+            offset_of!(o3d_mesh_write_options_t, write_triangle_uvs),
+            20,
+        ),
         // Callback pointers are plain (nullable) function pointers.
         ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
         ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
@@ -159,6 +228,52 @@ fn icp_options_init_accepts_rust_size_and_fills_defaults() {
         assert_eq!(st, O3D_ERROR_INVALID_ARGUMENT);
         assert_eq!(o3d_last_error_code(), O3D_ERROR_INVALID_ARGUMENT);
         assert!(!last_message().is_empty());
+    }
+}
+
+#[test]
+fn rgbd_and_depth_options_init_accept_rust_sizes_and_fill_defaults() {
+    unsafe {
+        let mut r: o3d_rgbd_options_t = std::mem::zeroed();
+        let st = o3d_rgbd_options_init(&mut r, size_of::<o3d_rgbd_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(r.struct_size as usize, size_of::<o3d_rgbd_options_t>());
+        assert_eq!((r.depth_scale, r.depth_trunc, r.convert_rgb_to_intensity), (1000.0, 3.0, 1));
+
+        let mut d: o3d_depth_to_cloud_options_t = std::mem::zeroed();
+        let st = o3d_depth_to_cloud_options_init(&mut d, size_of::<o3d_depth_to_cloud_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(d.struct_size as usize, size_of::<o3d_depth_to_cloud_options_t>());
+        assert_eq!((d.depth_scale, d.depth_trunc, d.stride, d.project_valid_depth_only), (1000.0, 1000.0, 1, 1));
+    }
+}
+
+#[test]
+fn mesh_io_options_init_accept_rust_sizes_and_fill_defaults() {
+    unsafe {
+        let mut r: o3d_mesh_read_options_t = std::mem::zeroed();
+        let st = o3d_mesh_read_options_init(&mut r, size_of::<o3d_mesh_read_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(r.struct_size as usize, size_of::<o3d_mesh_read_options_t>());
+        assert_eq!(r.enable_post_processing, 0);
+
+        let mut w: o3d_mesh_write_options_t = std::mem::zeroed();
+        let st = o3d_mesh_write_options_init(&mut w, size_of::<o3d_mesh_write_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(w.struct_size as usize, size_of::<o3d_mesh_write_options_t>());
+        assert_eq!((w.write_ascii, w.compressed), (0, 0));
+        assert_eq!((w.write_vertex_normals, w.write_vertex_colors, w.write_triangle_uvs), (1, 1, 1));
+    }
+}
+
+#[test]
+fn intrinsic_preset_fills_the_frozen_struct() {
+    unsafe {
+        let mut k = o3d_pinhole_intrinsic_t::default();
+        let st = o3d_pinhole_intrinsic_set_preset(&mut k, O3D_INTRINSIC_PRIMESENSE_DEFAULT);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(k, o3d_pinhole_intrinsic_t { width: 640, height: 480, fx: 525.0, fy: 525.0, cx: 319.5, cy: 239.5 });
+        assert_eq!(o3d_pinhole_intrinsic_set_preset(&mut k, 99), O3D_ERROR_INVALID_ARGUMENT);
     }
 }
 

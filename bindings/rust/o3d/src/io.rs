@@ -1,4 +1,6 @@
-//! Reading and writing point clouds (o3d.io): PLY, PCD, XYZ, XYZN, XYZRGB, PTS, to files or memory.
+//! Reading and writing (o3d.io): point clouds (PLY, PCD, XYZ, XYZN, XYZRGB, PTS), triangle meshes
+//! (PLY, OBJ, STL, OFF, glTF/GLB), images (PNG, JPEG, PPM, PGM) and camera models (JSON, .log), to
+//! files or memory.
 //!
 //! Formats are named as in Open3D (`"ply"`, `"pcd"`, ...); `"auto"` or `""` picks the format from
 //! the file extension. Paths must be valid UTF-8 (anything else is an `InvalidArgument` error).
@@ -13,6 +15,8 @@ use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{new_cloud, PointCloud};
+
+pub use crate::io_geometry::*;
 
 /// Read options (o3d.io.read_point_cloud keyword arguments).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -58,11 +62,11 @@ impl WriteOptions {
     }
 }
 
-fn c_string(what: &str, s: &str) -> Result<CString> {
+pub(crate) fn c_string(what: &str, s: &str) -> Result<CString> {
     CString::new(s).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("{what} {s:?} contains a NUL byte")))
 }
 
-fn c_path(path: &Path) -> Result<CString> {
+pub(crate) fn c_path(path: &Path) -> Result<CString> {
     let s = path
         .to_str()
         .ok_or_else(|| Error::new(ErrorCode::InvalidArgument, format!("path {} is not valid UTF-8", path.display())))?;
@@ -150,12 +154,13 @@ impl fmt::Debug for Buffer {
 pub fn write_point_cloud_to_buffer(cloud: &PointCloud, format: &str, options: &WriteOptions) -> Result<Buffer> {
     let format = c_string("format", format)?;
     let opts = options.to_raw()?;
-    let mut out = ptr::null_mut();
     // SAFETY: valid handle, NUL-terminated format, valid options, out-pointer.
-    check(unsafe { sys::o3d_io_write_point_cloud_to_memory(&mut out, cloud.as_raw(), format.as_ptr(), &opts) })?;
-    NonNull::new(out)
-        .map(|raw| Buffer { raw })
-        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no buffer"))
+    new_buffer(|out| unsafe { sys::o3d_io_write_point_cloud_to_memory(out, cloud.as_raw(), format.as_ptr(), &opts) })
+}
+
+/// Run a C encoder writing a new buffer, and own it.
+pub(crate) fn new_buffer(f: impl FnOnce(*mut *mut sys::o3d_buffer_t) -> sys::o3d_status) -> Result<Buffer> {
+    crate::util::adopt("buffer", f, |raw| Buffer { raw })
 }
 
 /// Encode `cloud` in `format` (e.g. `"ply"`) into a byte vector.

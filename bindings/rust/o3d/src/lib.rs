@@ -1,8 +1,9 @@
 //! Safe Rust bindings for **o3d**, a library for 3D data processing (an Open3D replacement).
 //!
 //! Built only on the C API (`o3d-sys`, `libo3d.so.0`). Names follow Open3D:
-//! [`PointCloud`] (`o3d.geometry.PointCloud`), [`KDTreeFlann`], [`io::read_point_cloud`],
-//! [`registration::registration_icp`].
+//! [`PointCloud`] (`o3d.geometry.PointCloud`), [`TriangleMesh`], [`Image`], [`RgbdImage`],
+//! [`PinholeIntrinsic`] (`o3d.camera.PinholeCameraIntrinsic`), [`KDTreeFlann`],
+//! [`io::read_point_cloud`], [`io::read_triangle_mesh`], [`registration::registration_icp`].
 //!
 //! * Every fallible call returns [`Result<T, Error>`](Error); the error carries the library's message.
 //! * Handles are owned (`Drop` destroys them); views such as [`PointCloud::points`] are zero-copy
@@ -29,16 +30,29 @@ use std::sync::{Arc, RwLock};
 
 pub use o3d_sys as sys;
 
+pub mod camera;
 mod error;
+mod image;
 pub mod io;
+mod io_geometry;
 mod kdtree;
 mod panic;
 mod pointcloud;
 pub mod registration;
+mod rgbd;
+mod trianglemesh;
+mod trianglemesh_ops;
+mod trianglemesh_primitives;
+mod util;
 
+pub use camera::{CameraTrajectory, IntrinsicPreset, PinholeCameraParameters, PinholeIntrinsic};
 pub use error::{Error, ErrorCode, Result};
+pub use image::{ConvertType, Image, ImageFilter, PixelType};
 pub use kdtree::{KDTreeFlann, SearchResult, SearchResultRef};
 pub use pointcloud::{PointCloud, SearchParam};
+pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
+pub use trianglemesh::{MeshArray, TriangleMesh};
+pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
 
 use error::check;
 

@@ -451,4 +451,61 @@ public final class PointCloud extends NativeResource {
         Reference.reachabilityFence(this);
         return out;
     }
+
+    // ---- from depth and RGB-D images (rgbd.h) ------------------------------------------------------
+
+    /**
+     * Back-project a 1-channel depth image (uint16 raw, or float32 metres) through {@code intrinsic}, then
+     * to world coordinates with the inverse of {@code extrinsic} (row-major 4x4; null: identity).
+     * Open3D's PointCloud.create_from_depth_image; stride: every stride-th pixel; projectValidDepthOnly
+     * false keeps invalid pixels as NaN points (an organised cloud).
+     */
+    public static PointCloud createFromDepthImage(Image depth, PinholeCameraIntrinsic intrinsic, double[] extrinsic,
+            double depthScale, double depthTrunc, int stride, boolean projectValidDepthOnly) {
+        java.util.Objects.requireNonNull(depth, "depth");
+        java.util.Objects.requireNonNull(intrinsic, "intrinsic");
+        double[] e = fixed(extrinsic, 16, "extrinsic", true);
+        long[] h = new long[1];
+        o3d_pinhole_intrinsic_t k = intrinsic.toNative();
+        o3d_depth_to_cloud_options_t o = new o3d_depth_to_cloud_options_t();
+        try {
+            O3dNative.o3d_depth_to_cloud_options_init(o, O3dNative.o3dx_sizeof_depth_to_cloud_options());
+            o.setDepth_scale(depthScale);
+            o.setDepth_trunc(depthTrunc);
+            o.setStride(stride);
+            o.setProject_valid_depth_only(projectValidDepthOnly ? 1 : 0);
+            O3dNative.o3d_pointcloud_create_from_depth_image(h, depth.handle(), k, e, o);
+        } finally {
+            o.delete();
+            k.delete();
+        }
+        Reference.reachabilityFence(depth);
+        return wrap(h);
+    }
+
+    /** With Open3D's defaults: identity extrinsic, depth scale 1000, truncation 1000 m, stride 1, valid depth only. */
+    public static PointCloud createFromDepthImage(Image depth, PinholeCameraIntrinsic intrinsic) {
+        return createFromDepthImage(depth, intrinsic, null, 1000.0, 1000.0, 1, true);
+    }
+
+    /** As createFromDepthImage for an RGB-D image, with per-point colors (extrinsic null: identity). */
+    public static PointCloud createFromRGBDImage(RGBDImage image, PinholeCameraIntrinsic intrinsic, double[] extrinsic,
+            boolean projectValidDepthOnly) {
+        java.util.Objects.requireNonNull(image, "image");
+        java.util.Objects.requireNonNull(intrinsic, "intrinsic");
+        double[] e = fixed(extrinsic, 16, "extrinsic", true);
+        long[] h = new long[1];
+        o3d_pinhole_intrinsic_t k = intrinsic.toNative();
+        try {
+            O3dNative.o3d_pointcloud_create_from_rgbd_image(h, image.handle(), k, e, projectValidDepthOnly ? 1 : 0);
+        } finally {
+            k.delete();
+        }
+        Reference.reachabilityFence(image);
+        return wrap(h);
+    }
+
+    public static PointCloud createFromRGBDImage(RGBDImage image, PinholeCameraIntrinsic intrinsic) {
+        return createFromRGBDImage(image, intrinsic, null, true);
+    }
 }

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file image.hpp
+/// @brief o3dpp::Image (move-only owner of an o3d_image_t): 1, 3 or 4 channels of uint8, uint16 or
+/// float32, rows top to bottom, channels interleaved.
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "o3d/image.h"
+#include "o3dpp/common.hpp"
+#include "o3dpp/error.hpp"
+#include "o3dpp/handle.hpp"
+#include "o3dpp/span.hpp"
+
+namespace o3dpp {
+
+/// @brief Image.filter kernels.
+enum class ImageFilter : int32_t {
+    Gaussian3 = O3D_IMAGE_FILTER_GAUSSIAN3,
+    Gaussian5 = O3D_IMAGE_FILTER_GAUSSIAN5,
+    Gaussian7 = O3D_IMAGE_FILTER_GAUSSIAN7,
+    Sobel3Dx = O3D_IMAGE_FILTER_SOBEL3_DX,
+    Sobel3Dy = O3D_IMAGE_FILTER_SOBEL3_DY
+};
+
+/// @brief How create_float_image makes color gray.
+enum class ImageConvert : int32_t { Equal = O3D_IMAGE_CONVERT_EQUAL, Weighted = O3D_IMAGE_CONVERT_WEIGHTED };
+
+class Image {
+public:
+    /// @brief Zero-filled image; bytes_per_channel 1 (uint8), 2 (uint16) or 4 (float32).
+    Image(int width, int height, int num_channels, int bytes_per_channel) {
+        o3d_image_t* p = nullptr;
+        check(o3d_image_create(&p, width, height, num_channels, bytes_per_channel));
+        h_.reset(p);
+    }
+    /// @brief Take ownership of `owned` (must not be NULL).
+    explicit Image(o3d_image_t* owned) : h_(owned) {
+        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::Image: NULL handle");
+    }
+    /// @brief Copy of `size` bytes of pixel data (exactly width * height * channels * bytes_per_channel).
+    static Image from_data(int width, int height, int num_channels, int bytes_per_channel, const void* data,
+                           std::size_t size) {
+        return adopt([&](o3d_image_t** o) {
+            return o3d_image_create_from_data(o, width, height, num_channels, bytes_per_channel,
+                                              static_cast<const uint8_t*>(data), size);
+        });
+    }
+    /// @brief 1-channel image from width * height values of uint8_t, uint16_t or float.
+    template <typename T>
+    static Image from_values(int width, int height, const std::vector<T>& values, int num_channels = 1) {
+        static_assert(sizeof(T) == 1 || sizeof(T) == 2 || sizeof(T) == 4, "uint8_t, uint16_t or float");
+        return from_data(width, height, num_channels, static_cast<int>(sizeof(T)), values.data(),
+                         values.size() * sizeof(T));
+    }
+
+    Image(Image&&) noexcept = default;
+    Image& operator=(Image&&) noexcept = default;
+    Image(const Image&) = delete;
+    Image& operator=(const Image&) = delete;
+
+    o3d_image_t* get() const noexcept { return h_.get(); }
+    o3d_image_t* release() noexcept { return h_.release(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+
+    /// @brief Deep copy.
+    Image clone() const { return adopt([&](o3d_image_t** o) { return o3d_image_clone(o, get()); }); }
+
+    int width() const { return query(&o3d_image_width); }
+    int height() const { return query(&o3d_image_height); }
+    int num_channels() const { return query(&o3d_image_num_channels); }
+    int bytes_per_channel() const { return query(&o3d_image_bytes_per_channel); }
+
+    /// @brief Borrowed pixel bytes: valid until the next mutating call or destruction.
+    Span<const uint8_t> data() const {
+        const uint8_t* d = nullptr;
+        size_t n = 0;
+        check(o3d_image_data_view(get(), &d, &n));
+        return {d, n};
+    }
+    Span<uint8_t> data_mutable() {
+        uint8_t* d = nullptr;
+        size_t n = 0;
+        check(o3d_image_data_mutable_view(get(), &d, &n));
+        return {d, n};
+    }
+    /// @brief Copy of the pixel bytes.
+    std::vector<uint8_t> to_bytes() const {
+        size_t n = 0;
+        check(o3d_image_get_data(get(), nullptr, 0, &n));
+        std::vector<uint8_t> out(n);
+        check(o3d_image_get_data(get(), out.data(), out.size(), &n));
+        out.resize(n);
+        return out;
+    }
+    /// @brief Copy of the values as T (sizeof(T) must equal bytes_per_channel).
+    template <typename T>
+    std::vector<T> to_values() const {
+        if (static_cast<int>(sizeof(T)) != bytes_per_channel())
+            throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::Image::to_values: element size differs from the image's");
+        auto bytes = data();
+        std::vector<T> out(bytes.size() / sizeof(T));
+        if (!out.empty()) std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+        return out;
+    }
+
+    /// @brief Filtered copy of a 1-channel float image.
+    Image filter(ImageFilter type) const {
+        return adopt([&](o3d_image_t** o) { return o3d_image_filter(o, get(), static_cast<int32_t>(type)); });
+    }
+    /// @brief Half-size float image of 2x2 means.
+    Image downsample() const { return adopt([&](o3d_image_t** o) { return o3d_image_downsample(o, get()); }); }
+    Image flip_vertical() const { return adopt([&](o3d_image_t** o) { return o3d_image_flip_vertical(o, get()); }); }
+    Image flip_horizontal() const {
+        return adopt([&](o3d_image_t** o) { return o3d_image_flip_horizontal(o, get()); });
+    }
+    /// @brief 1-channel float copy (8-bit scaled to [0,1]).
+    Image create_float_image(ImageConvert convert = ImageConvert::Weighted) const {
+        return adopt(
+            [&](o3d_image_t** o) { return o3d_image_create_float_image(o, get(), static_cast<int32_t>(convert)); });
+    }
+    /// @brief Depth in metres: raw / depth_scale, beyond depth_trunc set to 0.
+    Image convert_depth_to_float(double depth_scale = 1000.0, double depth_trunc = 3.0) const {
+        return adopt([&](o3d_image_t** o) {
+            return o3d_image_convert_depth_to_float(o, get(), depth_scale, depth_trunc);
+        });
+    }
+
+    /// @brief Run `create(o3d_image_t**)` and own what it returns.
+    template <typename F>
+    static Image adopt(F&& create) {
+        o3d_image_t* p = nullptr;
+        check(create(&p));
+        return Image(p);
+    }
+
+private:
+    int query(o3d_status (*fn)(const o3d_image_t*, int32_t*)) const {
+        int32_t v = 0;
+        check(fn(get(), &v));
+        return v;
+    }
+
+    UniqueHandle<o3d_image_t, &o3d_image_destroy> h_;
+};
+
+}  // namespace o3dpp

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// Python-side holders of the mesh, image, RGB-D and camera handles (trianglemesh.h, image.h, rgbd.h,
+// camera.h). Each owns its C handle through a shared_ptr so numpy views can keep it alive.
+#pragma once
+
+#include <type_traits>
+
+#include "common.h"
+
+namespace o3dpy {
+
+/// A C handle plus a reader/writer lock (the C API allows concurrent const calls only).
+template <typename T, void (*Destroy)(T*)>
+struct Handle {
+    T* p = nullptr;
+    mutable std::shared_mutex mutex;
+    explicit Handle(T* raw) : p(raw) {}
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    ~Handle() { Destroy(p); }
+};
+
+using MeshHandle = Handle<o3d_trianglemesh_t, &o3d_trianglemesh_destroy>;
+using MeshPtr = std::shared_ptr<MeshHandle>;
+using ImageHandle = Handle<o3d_image_t, &o3d_image_destroy>;
+using ImagePtr = std::shared_ptr<ImageHandle>;
+using RgbdHandle = Handle<o3d_rgbd_image_t, &o3d_rgbd_image_destroy>;
+using RgbdPtr = std::shared_ptr<RgbdHandle>;
+
+/// Run `f(const T*)` under a shared lock with the GIL released; raise on failure.
+template <typename H, typename F>
+void locked_const(const std::shared_ptr<H>& h, F&& f) {
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        std::shared_lock<std::shared_mutex> lock(h->mutex);
+        s = f(static_cast<const std::remove_pointer_t<decltype(h->p)>*>(h->p));
+    }
+    check(s);
+}
+
+/// Run `f(T*)` under an exclusive lock with the GIL released; raise on failure.
+template <typename H, typename F>
+void locked_mut(const std::shared_ptr<H>& h, F&& f) {
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        std::unique_lock<std::shared_mutex> lock(h->mutex);
+        s = f(h->p);
+    }
+    check(s);
+}
+
+/// o3d.geometry.TriangleMesh; copy-on-write before resizing calls, as PyPointCloud.
+struct PyTriangleMesh {
+    MeshPtr h;
+    PyTriangleMesh();
+    explicit PyTriangleMesh(o3d_trianglemesh_t* raw) : h(std::make_shared<MeshHandle>(raw)) {}
+    /// Handle for a call that may reallocate arrays: a private clone while views share the current one.
+    MeshPtr for_resize();
+};
+
+/// o3d.geometry.Image. No C call resizes an image in place, so the pixel memory is fixed for the
+/// handle's life and numpy views (buffer protocol) can point at it directly.
+struct PyImage {
+    ImagePtr h;
+    bool readonly = false;  // parts of an RGBDImage are snapshots: writing them would change nothing
+    explicit PyImage(o3d_image_t* raw) : h(std::make_shared<ImageHandle>(raw)) {}
+    const o3d_image_t* get() const { return h->p; }
+};
+
+/// o3d.geometry.RGBDImage: the C handle plus read-only snapshots of its two images.
+struct PyRGBDImage {
+    RgbdPtr h;
+    py::object color;
+    py::object depth;
+};
+
+/// o3d.camera.PinholeCameraIntrinsic (a plain C value).
+struct PyIntrinsic {
+    o3d_pinhole_intrinsic_t v{};
+};
+
+/// o3d.camera.PinholeCameraParameters.
+struct PyCameraParameters {
+    PyIntrinsic intrinsic;
+    std::array<double, 16> extrinsic{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+};
+
+/// o3d.camera.PinholeCameraTrajectory over o3d_camera_trajectory_t.
+struct PyTrajectory {
+    std::shared_ptr<o3d_camera_trajectory_t> h;
+    PyTrajectory();
+    explicit PyTrajectory(o3d_camera_trajectory_t* raw) : h(raw, &o3d_camera_trajectory_destroy) {}
+};
+
+/// Shared conversions of the new bindings.
+std::string path_of(py::handle filename);
+uint64_t seed_or_random(py::handle seed);
+py::array vec3_to_array(const double* v);
+py::array mat_to_array(const double* v, size_t rows, size_t cols);
+std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle box);
+py::object make_aabb(const double* lo, const double* hi);
+PyImage image_from_array(py::handle obj);
+
+/// Enumerations of the new bindings, values equal to the C constants.
+enum class SimplificationContraction : int32_t { Average = O3D_SIMPLIFICATION_AVERAGE, Quadric = O3D_SIMPLIFICATION_QUADRIC };
+enum class FilterScope : int32_t {
+    All = O3D_FILTER_SCOPE_ALL,
+    Color = O3D_FILTER_SCOPE_COLOR,
+    Normal = O3D_FILTER_SCOPE_NORMAL,
+    Vertex = O3D_FILTER_SCOPE_VERTEX
+};
+enum class ImageFilterType : int32_t {
+    Gaussian3 = O3D_IMAGE_FILTER_GAUSSIAN3,
+    Gaussian5 = O3D_IMAGE_FILTER_GAUSSIAN5,
+    Gaussian7 = O3D_IMAGE_FILTER_GAUSSIAN7,
+    Sobel3dx = O3D_IMAGE_FILTER_SOBEL3_DX,
+    Sobel3dy = O3D_IMAGE_FILTER_SOBEL3_DY
+};
+enum class ColorToIntensityConversionType : int32_t { Equal = O3D_IMAGE_CONVERT_EQUAL, Weighted = O3D_IMAGE_CONVERT_WEIGHTED };
+enum class IntrinsicPreset : int32_t {
+    PrimeSenseDefault = O3D_INTRINSIC_PRIMESENSE_DEFAULT,
+    Kinect2DepthCameraDefault = O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
+    Kinect2ColorCameraDefault = O3D_INTRINSIC_KINECT2_COLOR_DEFAULT
+};
+
+void declare_trianglemesh(py::module_& m);
+void declare_trianglemesh_enums(py::module_& m);
+void declare_image(py::module_& m);
+void declare_camera(py::module_& m);
+void define_trianglemesh(py::module_& m);
+void define_trianglemesh_processing(py::module_& m);
+void define_image(py::module_& m);
+void define_rgbd(py::module_& m);
+void define_camera(py::module_& m);
+void define_io_geometry(py::module_& m);
+
+}  // namespace o3dpy

@@ -1,0 +1,25 @@
+"""Long mesh and image calls release the GIL (as the point-cloud ones, see test_gil.py)."""
+import numpy as np
+
+import o3d
+from test_gil import max_stall_during
+
+
+def test_mesh_sampling_releases_gil():
+    sphere = o3d.geometry.TriangleMesh.create_sphere(resolution=200)
+    out = {}
+    stall, duration = max_stall_during(
+        lambda: out.setdefault("p", sphere.sample_points_uniformly(number_of_points=3_000_000, seed=1)))
+    assert len(out["p"].points) == 3_000_000
+    assert duration > 0.05, "sampling finished too fast to observe"
+    assert stall < 0.5 * duration
+
+
+def test_image_filter_releases_gil():
+    img = o3d.geometry.Image(np.random.default_rng(0).uniform(size=(3000, 3000)).astype(np.float32))
+    out = {}
+    stall, duration = max_stall_during(
+        lambda: out.setdefault("i", [img.filter(o3d.geometry.ImageFilterType.Gaussian7) for _ in range(3)]))
+    assert np.asarray(out["i"][0]).shape == (3000, 3000)
+    assert duration > 0.05
+    assert stall < 0.5 * duration

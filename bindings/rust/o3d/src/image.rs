@@ -1,0 +1,295 @@
+//! `Image` (o3d.geometry.Image): 1, 3 or 4 interleaved channels of `u8`, `u16` or `f32`, rows top
+//! to bottom.
+use std::fmt;
+use std::ptr::{self, NonNull};
+use std::slice;
+
+use o3d_sys as sys;
+
+use crate::error::{check, Error, ErrorCode, Result};
+use crate::pointcloud::copy_out;
+use crate::util::adopt;
+
+/// The pixel type of an image (`bytes_per_channel` 1, 2 or 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PixelType {
+    /// `u8`, one byte per channel.
+    U8,
+    /// `u16` (native byte order), e.g. raw depth in millimetres.
+    U16,
+    /// `f32`, e.g. depth in metres or intensity in `[0, 1]`.
+    F32,
+}
+
+impl PixelType {
+    /// Bytes per channel (1, 2 or 4).
+    pub fn bytes(self) -> i32 {
+        match self {
+            PixelType::U8 => 1,
+            PixelType::U16 => 2,
+            PixelType::F32 => 4,
+        }
+    }
+
+    fn from_bytes(bytes: i32) -> Result<PixelType> {
+        match bytes {
+            1 => Ok(PixelType::U8),
+            2 => Ok(PixelType::U16),
+            4 => Ok(PixelType::F32),
+            other => Err(Error::new(ErrorCode::Internal, format!("unknown bytes_per_channel {other}"))),
+        }
+    }
+}
+
+/// The filters of [`Image::filter`] (`O3D_IMAGE_FILTER_*`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ImageFilter {
+    /// 3x3 Gaussian.
+    Gaussian3,
+    /// 5x5 Gaussian.
+    Gaussian5,
+    /// 7x7 Gaussian.
+    Gaussian7,
+    /// Horizontal Sobel derivative.
+    Sobel3Dx,
+    /// Vertical Sobel derivative.
+    Sobel3Dy,
+}
+
+impl ImageFilter {
+    fn raw(self) -> i32 {
+        match self {
+            ImageFilter::Gaussian3 => sys::O3D_IMAGE_FILTER_GAUSSIAN3,
+            ImageFilter::Gaussian5 => sys::O3D_IMAGE_FILTER_GAUSSIAN5,
+            ImageFilter::Gaussian7 => sys::O3D_IMAGE_FILTER_GAUSSIAN7,
+            ImageFilter::Sobel3Dx => sys::O3D_IMAGE_FILTER_SOBEL3_DX,
+            ImageFilter::Sobel3Dy => sys::O3D_IMAGE_FILTER_SOBEL3_DY,
+        }
+    }
+}
+
+/// How [`Image::create_float_image`] turns color into gray (`O3D_IMAGE_CONVERT_*`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+pub enum ConvertType {
+    /// Mean of R, G and B.
+    Equal,
+    /// 0.299 R + 0.587 G + 0.114 B (Open3D's default).
+    #[default]
+    Weighted,
+}
+
+impl ConvertType {
+    fn raw(self) -> i32 {
+        match self {
+            ConvertType::Equal => sys::O3D_IMAGE_CONVERT_EQUAL,
+            ConvertType::Weighted => sys::O3D_IMAGE_CONVERT_WEIGHTED,
+        }
+    }
+}
+
+/// A 2D image. Owns an `o3d_image_t`; `Send` and `Sync` under the same rule as [`crate::PointCloud`].
+pub struct Image {
+    raw: NonNull<sys::o3d_image_t>,
+}
+
+// SAFETY: `&self` methods make only `const` C calls; mutation takes `&mut self`.
+unsafe impl Send for Image {}
+unsafe impl Sync for Image {}
+
+/// Run a C function writing a new image, and own it.
+pub(crate) fn new_image(f: impl FnOnce(*mut *mut sys::o3d_image_t) -> sys::o3d_status) -> Result<Image> {
+    adopt("image", f, |raw| Image { raw })
+}
+
+impl Image {
+    /// A zero-filled `width` x `height` image of `channels` (1, 3 or 4) channels of `pixel`.
+    pub fn new(width: i32, height: i32, channels: i32, pixel: PixelType) -> Result<Image> {
+        // SAFETY: plain values and an out-pointer.
+        new_image(|out| unsafe { sys::o3d_image_create(out, width, height, channels, pixel.bytes()) })
+    }
+
+    /// An image holding a copy of `data` (exactly width * height * channels * bytes per channel bytes).
+    pub fn from_bytes(width: i32, height: i32, channels: i32, pixel: PixelType, data: &[u8]) -> Result<Image> {
+        // SAFETY: data.len() readable bytes.
+        new_image(|out| unsafe {
+            sys::o3d_image_create_from_data(out, width, height, channels, pixel.bytes(), data.as_ptr(), data.len())
+        })
+    }
+
+    /// A 1-channel `u16` image (e.g. raw depth) from `width * height` values, row by row.
+    pub fn from_u16(width: i32, height: i32, values: &[u16]) -> Result<Image> {
+        // SAFETY: a u16 slice viewed as its bytes (native order, as the C API wants).
+        let bytes = unsafe { slice::from_raw_parts(values.as_ptr().cast::<u8>(), std::mem::size_of_val(values)) };
+        Image::from_bytes(width, height, 1, PixelType::U16, bytes)
+    }
+
+    /// A 1-channel `f32` image (e.g. depth in metres) from `width * height` values, row by row.
+    pub fn from_f32(width: i32, height: i32, values: &[f32]) -> Result<Image> {
+        // SAFETY: an f32 slice viewed as its bytes.
+        let bytes = unsafe { slice::from_raw_parts(values.as_ptr().cast::<u8>(), std::mem::size_of_val(values)) };
+        Image::from_bytes(width, height, 1, PixelType::F32, bytes)
+    }
+
+    /// Take ownership of a raw handle.
+    ///
+    /// # Safety
+    /// `raw` must be a valid image handle owned by the caller; it is destroyed on drop.
+    pub unsafe fn from_raw(raw: NonNull<sys::o3d_image_t>) -> Image {
+        Image { raw }
+    }
+
+    /// The raw handle, still owned by `self`.
+    pub fn as_raw(&self) -> *const sys::o3d_image_t {
+        self.raw.as_ptr()
+    }
+
+    /// Deep copy.
+    pub fn try_clone(&self) -> Result<Image> {
+        // SAFETY: valid source handle.
+        new_image(|out| unsafe { sys::o3d_image_clone(out, self.as_raw()) })
+    }
+
+    fn int(&self, f: unsafe extern "C" fn(*const sys::o3d_image_t, *mut i32) -> sys::o3d_status) -> Result<i32> {
+        let mut v = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { f(self.as_raw(), &mut v) })?;
+        Ok(v)
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> Result<i32> {
+        self.int(sys::o3d_image_width)
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> Result<i32> {
+        self.int(sys::o3d_image_height)
+    }
+
+    /// Channels per pixel (1, 3 or 4).
+    pub fn num_channels(&self) -> Result<i32> {
+        self.int(sys::o3d_image_num_channels)
+    }
+
+    /// Bytes per channel (1, 2 or 4).
+    pub fn bytes_per_channel(&self) -> Result<i32> {
+        self.int(sys::o3d_image_bytes_per_channel)
+    }
+
+    /// The pixel type.
+    pub fn pixel_type(&self) -> Result<PixelType> {
+        PixelType::from_bytes(self.bytes_per_channel()?)
+    }
+
+    /// Zero-copy view of the pixel bytes, borrowed from the image.
+    pub fn data(&self) -> Result<&[u8]> {
+        let (mut data, mut size) = (ptr::null(), 0);
+        // SAFETY: valid handle and out-pointers.
+        check(unsafe { sys::o3d_image_data_view(self.as_raw(), &mut data, &mut size) })?;
+        if data.is_null() || size == 0 {
+            return Ok(&[]);
+        }
+        // SAFETY: `size` bytes valid until the next mutation, which needs `&mut self`.
+        Ok(unsafe { slice::from_raw_parts(data, size) })
+    }
+
+    /// Writable zero-copy view of the pixel bytes.
+    pub fn data_mut(&mut self) -> Result<&mut [u8]> {
+        let (mut data, mut size) = (ptr::null_mut(), 0);
+        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
+        check(unsafe { sys::o3d_image_data_mutable_view(self.raw.as_ptr(), &mut data, &mut size) })?;
+        if data.is_null() || size == 0 {
+            return Ok(&mut []);
+        }
+        // SAFETY: as `data`, unique for the life of the `&mut self` borrow.
+        Ok(unsafe { slice::from_raw_parts_mut(data, size) })
+    }
+
+    /// Copy of the pixel bytes (`o3d_image_get_data`).
+    pub fn to_vec(&self) -> Result<Vec<u8>> {
+        // SAFETY: `out` has room for `cap` bytes or is NULL.
+        copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_image_get_data(self.as_raw(), out, cap, n) })
+    }
+
+    /// The values of a 1-channel `f32` image (copied; alignment of the bytes is not guaranteed).
+    pub fn to_f32_vec(&self) -> Result<Vec<f32>> {
+        if self.pixel_type()? != PixelType::F32 {
+            return Err(Error::new(ErrorCode::InvalidArgument, "to_f32_vec needs a float32 image"));
+        }
+        Ok(self.data()?.chunks_exact(4).map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]])).collect())
+    }
+
+    /// The values of a `u16` image (copied).
+    pub fn to_u16_vec(&self) -> Result<Vec<u16>> {
+        if self.pixel_type()? != PixelType::U16 {
+            return Err(Error::new(ErrorCode::InvalidArgument, "to_u16_vec needs a uint16 image"));
+        }
+        Ok(self.data()?.chunks_exact(2).map(|c| u16::from_ne_bytes([c[0], c[1]])).collect())
+    }
+
+    fn derived(
+        &self,
+        f: unsafe extern "C" fn(*mut *mut sys::o3d_image_t, *const sys::o3d_image_t) -> sys::o3d_status,
+    ) -> Result<Image> {
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe { f(out, self.as_raw()) })
+    }
+
+    /// Filtered copy of a 1-channel `f32` image (others: Err; see [`Self::create_float_image`]).
+    pub fn filter(&self, filter: ImageFilter) -> Result<Image> {
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe { sys::o3d_image_filter(out, self.as_raw(), filter.raw()) })
+    }
+
+    /// Half-size 1-channel `f32` image of 2x2 means.
+    pub fn downsample(&self) -> Result<Image> {
+        self.derived(sys::o3d_image_downsample)
+    }
+
+    /// Copy flipped upside down.
+    pub fn flip_vertical(&self) -> Result<Image> {
+        self.derived(sys::o3d_image_flip_vertical)
+    }
+
+    /// Copy flipped left to right.
+    pub fn flip_horizontal(&self) -> Result<Image> {
+        self.derived(sys::o3d_image_flip_horizontal)
+    }
+
+    /// 1-channel `f32` copy (8-bit scaled to `[0, 1]`, color made gray by `convert`).
+    pub fn create_float_image(&self, convert: ConvertType) -> Result<Image> {
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe { sys::o3d_image_create_float_image(out, self.as_raw(), convert.raw()) })
+    }
+
+    /// Depth in metres: raw depth / `depth_scale`, values above `depth_trunc` set to 0.
+    pub fn convert_depth_to_float(&self, depth_scale: f64, depth_trunc: f64) -> Result<Image> {
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe { sys::o3d_image_convert_depth_to_float(out, self.as_raw(), depth_scale, depth_trunc) })
+    }
+}
+
+impl Drop for Image {
+    fn drop(&mut self) {
+        // SAFETY: owned handle, destroyed once.
+        unsafe { sys::o3d_image_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl Clone for Image {
+    /// Deep copy. Panics if the library cannot copy; see [`Image::try_clone`].
+    fn clone(&self) -> Self {
+        self.try_clone().unwrap_or_else(|e| panic!("o3d_image_clone failed: {e}"))
+    }
+}
+
+impl fmt::Debug for Image {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Image")
+            .field("width", &self.width().unwrap_or(0))
+            .field("height", &self.height().unwrap_or(0))
+            .field("channels", &self.num_channels().unwrap_or(0))
+            .field("bytes_per_channel", &self.bytes_per_channel().unwrap_or(0))
+            .finish()
+    }
+}

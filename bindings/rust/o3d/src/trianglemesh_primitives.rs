@@ -1,0 +1,101 @@
+//! `TriangleMesh::create_*`: Open3D's primitive meshes (its defaults are in each doc comment).
+use o3d_sys as sys;
+
+use crate::error::Result;
+use crate::trianglemesh::{new_mesh, TriangleMesh};
+use crate::util::{opt_ptr, to_i32};
+
+impl TriangleMesh {
+    /// Box `[0,width] x [0,height] x [0,depth]` (Open3D: 1, 1, 1).
+    pub fn create_box(width: f64, height: f64, depth: f64) -> Result<TriangleMesh> {
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_box(out, width, height, depth) })
+    }
+
+    /// UV sphere about the origin (Open3D: radius 1, resolution 20).
+    pub fn create_sphere(radius: f64, resolution: usize) -> Result<TriangleMesh> {
+        let r = to_i32(resolution, "resolution")?;
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_sphere(out, radius, r) })
+    }
+
+    /// Cylinder along z centred at the origin (Open3D: 1, 2, 20, 4).
+    pub fn create_cylinder(radius: f64, height: f64, resolution: usize, split: usize) -> Result<TriangleMesh> {
+        let (r, s) = (to_i32(resolution, "resolution")?, to_i32(split, "split")?);
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_cylinder(out, radius, height, r, s) })
+    }
+
+    /// Cone along z with its base at z = 0 (Open3D: 1, 2, 20, 1).
+    pub fn create_cone(radius: f64, height: f64, resolution: usize, split: usize) -> Result<TriangleMesh> {
+        let (r, s) = (to_i32(resolution, "resolution")?, to_i32(split, "split")?);
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_cone(out, radius, height, r, s) })
+    }
+
+    /// Torus about z (Open3D: 1, 0.5, 30, 20).
+    pub fn create_torus(
+        torus_radius: f64,
+        tube_radius: f64,
+        radial_resolution: usize,
+        tubular_resolution: usize,
+    ) -> Result<TriangleMesh> {
+        let radial = to_i32(radial_resolution, "radial_resolution")?;
+        let tubular = to_i32(tubular_resolution, "tubular_resolution")?;
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_torus(out, torus_radius, tube_radius, radial, tubular) })
+    }
+
+    /// Arrow along z: a cylinder then a cone (Open3D: 1, 1.5, 5, 4, 20, 4, 1).
+    #[allow(clippy::too_many_arguments)]
+    pub fn create_arrow(
+        cylinder_radius: f64,
+        cone_radius: f64,
+        cylinder_height: f64,
+        cone_height: f64,
+        resolution: usize,
+        cylinder_split: usize,
+        cone_split: usize,
+    ) -> Result<TriangleMesh> {
+        let r = to_i32(resolution, "resolution")?;
+        let cs = to_i32(cylinder_split, "cylinder_split")?;
+        let ks = to_i32(cone_split, "cone_split")?;
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe {
+            sys::o3d_trianglemesh_create_arrow(
+                out,
+                cylinder_radius,
+                cone_radius,
+                cylinder_height,
+                cone_height,
+                r,
+                cs,
+                ks,
+            )
+        })
+    }
+
+    /// Coloured axes of length `size` at `origin` (`None`: the origin).
+    pub fn create_coordinate_frame(size: f64, origin: Option<[f64; 3]>) -> Result<TriangleMesh> {
+        // SAFETY: out-pointer; origin NULL or 3 doubles.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_coordinate_frame(out, size, opt_ptr(&origin)) })
+    }
+
+    /// Regular tetrahedron inscribed in a sphere of `radius` (Open3D: 1).
+    pub fn create_tetrahedron(radius: f64) -> Result<TriangleMesh> {
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_tetrahedron(out, radius) })
+    }
+
+    /// Regular octahedron inscribed in a sphere of `radius`.
+    pub fn create_octahedron(radius: f64) -> Result<TriangleMesh> {
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_octahedron(out, radius) })
+    }
+
+    /// Regular icosahedron inscribed in a sphere of `radius`.
+    pub fn create_icosahedron(radius: f64) -> Result<TriangleMesh> {
+        // SAFETY: out-pointer.
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_icosahedron(out, radius) })
+    }
+}

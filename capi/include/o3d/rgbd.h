@@ -1,0 +1,85 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file rgbd.h
+ * @brief RGB-D images (a color or intensity image and a float depth image in metres) and their
+ * back-projection to point clouds. Mirrors o3d.geometry.RGBDImage and
+ * PointCloud.create_from_depth_image / create_from_rgbd_image.
+ *
+ * **Ownership:** as for images. The readers copy their inputs and never modify them.
+ */
+#ifndef O3D_RGBD_H
+#define O3D_RGBD_H
+
+#include "o3d/camera.h"
+#include "o3d/common.h"
+#include "o3d/image.h"
+#include "o3d/pointcloud.h"
+
+O3D_BEGIN_DECL
+
+typedef struct o3d_rgbd_image o3d_rgbd_image_t;
+
+/** RGBDImage.create_from_color_and_depth keyword arguments. */
+typedef struct o3d_rgbd_options {
+    uint32_t struct_size;             /**< sizeof(o3d_rgbd_options_t) */
+    double depth_scale;               /**< raw depth units per metre; default 1000 */
+    double depth_trunc;               /**< depths at or beyond this (metres) become 0; default 3.0 */
+    int32_t convert_rgb_to_intensity; /**< color → 1-channel float intensity in [0,1]; default 1 */
+} o3d_rgbd_options_t;
+
+/** @brief Fill defaults. */
+O3D_API o3d_status o3d_rgbd_options_init(o3d_rgbd_options_t* opts, uint32_t struct_size);
+
+/**
+ * @brief Pair a color image (8-bit, 1 or 3 channels) with a depth image (uint16 or float32, 1 channel)
+ * of the same size; depth is converted to float metres. @see RGBDImage.create_from_color_and_depth
+ */
+O3D_API o3d_status o3d_rgbd_image_create_from_color_and_depth(o3d_rgbd_image_t** out, const o3d_image_t* color,
+                                                              const o3d_image_t* depth,
+                                                              const o3d_rgbd_options_t* opts);
+
+#define O3D_RGBD_FORMAT_REDWOOD 0 /**< depth in mm (uint16), truncated at 4 m */
+#define O3D_RGBD_FORMAT_TUM 1     /**< depth scale 5000, truncated at 4 m */
+#define O3D_RGBD_FORMAT_SUN 2     /**< SUN RGB-D: depth bits rotated right by 3, in mm, truncated at 7 m */
+#define O3D_RGBD_FORMAT_NYU 3     /**< NYU raw PGM: byte-swapped disparity → metres, truncated at 7 m */
+/** @brief The dataset readers of the Open3D paper: create_from_{redwood,tum,sun,nyu}_format. */
+O3D_API o3d_status o3d_rgbd_image_create_from_dataset_format(o3d_rgbd_image_t** out, int32_t format,
+                                                             const o3d_image_t* color, const o3d_image_t* depth,
+                                                             int32_t convert_rgb_to_intensity);
+/** @brief Destroy. NULL is a no-op. */
+O3D_API void o3d_rgbd_image_destroy(o3d_rgbd_image_t* rgbd);
+/** @brief A copy of the color (or intensity) image. */
+O3D_API o3d_status o3d_rgbd_image_get_color(o3d_image_t** out, const o3d_rgbd_image_t* rgbd);
+/** @brief A copy of the depth image (1-channel float32, metres). */
+O3D_API o3d_status o3d_rgbd_image_get_depth(o3d_image_t** out, const o3d_rgbd_image_t* rgbd);
+
+/** PointCloud.create_from_depth_image keyword arguments. */
+typedef struct o3d_depth_to_cloud_options {
+    uint32_t struct_size;             /**< sizeof(o3d_depth_to_cloud_options_t) */
+    double depth_scale;               /**< raw units per metre for uint16 depth; default 1000 */
+    double depth_trunc;               /**< depths at or beyond this are dropped (metres); default 1000 */
+    int32_t stride;                   /**< use every stride-th pixel in x and y; default 1 */
+    int32_t project_valid_depth_only; /**< 0: invalid pixels give NaN points (organised cloud); default 1 */
+} o3d_depth_to_cloud_options_t;
+
+/** @brief Fill defaults. */
+O3D_API o3d_status o3d_depth_to_cloud_options_init(o3d_depth_to_cloud_options_t* opts, uint32_t struct_size);
+
+/**
+ * @brief Back-project a depth image (uint16 raw or float32 metres; 1 channel) through `intrinsic`, then
+ * to world coordinates with the inverse of `extrinsic` (row-major 4x4 world-to-camera; NULL: identity).
+ * @see PointCloud.create_from_depth_image
+ */
+O3D_API o3d_status o3d_pointcloud_create_from_depth_image(o3d_pointcloud_t** out, const o3d_image_t* depth,
+                                                          const o3d_pinhole_intrinsic_t* intrinsic,
+                                                          const double extrinsic[16],
+                                                          const o3d_depth_to_cloud_options_t* opts);
+/** @brief As create_from_depth_image for an RGB-D image, with per-point colors. */
+O3D_API o3d_status o3d_pointcloud_create_from_rgbd_image(o3d_pointcloud_t** out, const o3d_rgbd_image_t* rgbd,
+                                                         const o3d_pinhole_intrinsic_t* intrinsic,
+                                                         const double extrinsic[16],
+                                                         int32_t project_valid_depth_only);
+
+O3D_END_DECL
+
+#endif /* O3D_RGBD_H */

@@ -11,7 +11,7 @@ PACKAGES=(
   # build
   cmake ninja-build pkg-config g++ clang git ca-certificates
   # core
-  libeigen3-dev libflann-dev liblz4-dev liblzf-dev
+  libeigen3-dev libflann-dev liblz4-dev liblzf-dev libqhull-dev
   # images, meshes and camera files
   libpng-dev libjpeg-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   # tests and checks

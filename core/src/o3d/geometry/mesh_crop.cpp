@@ -9,15 +9,7 @@
 
 namespace o3d::geometry {
 
-TriangleMesh crop_aabb(const TriangleMesh& mesh, const Eigen::Vector3d& min_bound, const Eigen::Vector3d& max_bound) {
-    validate_triangles(mesh);
-    if (mesh.vertices.empty()) throw InvalidArgument("the mesh has no vertices");
-    PointCloud corners;
-    corners.points = mesh.vertices;
-    const std::vector<int64_t> inside_list = indices_in_aabb(corners, min_bound, max_bound);  // checks the box
-    std::vector<uint8_t> inside(mesh.vertices.size(), 0);
-    for (int64_t v : inside_list) inside[static_cast<size_t>(v)] = 1;
-
+TriangleMesh keep_triangles_inside(const TriangleMesh& mesh, const std::vector<uint8_t>& inside) {
     const bool triangle_normals = mesh.has_triangle_normals(), uvs = mesh.has_triangle_uvs(),
                material_ids = mesh.has_triangle_material_ids();
     std::vector<int> index(mesh.vertices.size(), -1);
@@ -47,6 +39,17 @@ TriangleMesh crop_aabb(const TriangleMesh& mesh, const Eigen::Vector3d& min_boun
     }
     out.textures = mesh.textures;
     return out;
+}
+
+TriangleMesh crop_aabb(const TriangleMesh& mesh, const Eigen::Vector3d& min_bound, const Eigen::Vector3d& max_bound) {
+    validate_triangles(mesh);
+    if (mesh.vertices.empty()) throw InvalidArgument("the mesh has no vertices");
+    PointCloud corners;
+    corners.points = mesh.vertices;
+    const std::vector<int64_t> inside_list = indices_in_aabb(corners, min_bound, max_bound);  // checks the box
+    std::vector<uint8_t> inside(mesh.vertices.size(), 0);
+    for (int64_t v : inside_list) inside[static_cast<size_t>(v)] = 1;
+    return keep_triangles_inside(mesh, inside);
 }
 
 }  // namespace o3d::geometry

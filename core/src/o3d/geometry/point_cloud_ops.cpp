@@ -10,8 +10,8 @@
 namespace o3d::geometry {
 namespace {
 
-void append_attribute(std::vector<Eigen::Vector3d>& target, bool keep, const std::vector<Eigen::Vector3d>& source,
-                      size_t new_size) {
+template <typename T>
+void append_attribute(std::vector<T>& target, bool keep, const std::vector<T>& source, size_t new_size) {
     if (!keep) {
         target.clear();
         return;
@@ -30,6 +30,8 @@ void append(PointCloud& target, const PointCloud& source) {
                      new_size);
     append_attribute(target.colors, (target_empty || target.has_colors()) && source.has_colors(), source.colors,
                      new_size);
+    append_attribute(target.covariances, (target_empty || target.has_covariances()) && source.has_covariances(),
+                     source.covariances, new_size);
     target.points.reserve(new_size);
     target.points.insert(target.points.end(), source.points.begin(), source.points.end());
 }
@@ -61,8 +63,10 @@ void transform(PointCloud& cloud, const Eigen::Matrix4d& transformation) {
         const Eigen::Vector4d h = transformation * p.homogeneous();
         p = h.head<3>() / h(3);
     }
-    if (!cloud.has_normals()) return;
     const Eigen::Matrix3d linear = transformation.topLeftCorner<3, 3>();
+    if (cloud.has_covariances())
+        for (auto& c : cloud.covariances) c = linear * c * linear.transpose();
+    if (!cloud.has_normals()) return;
     for (auto& n : cloud.normals) n = linear * n;
 }
 
@@ -76,6 +80,8 @@ void rotate(PointCloud& cloud, const Eigen::Matrix3d& rotation, const Eigen::Vec
     if (!rotation.allFinite()) throw InvalidArgument("rotation has a non-finite entry");
     if (!c.allFinite()) throw InvalidArgument("center has a non-finite entry");
     for (auto& p : cloud.points) p = rotation * (p - c) + c;
+    if (cloud.has_covariances())
+        for (auto& cov : cloud.covariances) cov = rotation * cov * rotation.transpose();
     if (!cloud.has_normals()) return;
     for (auto& n : cloud.normals) n = rotation * n;
 }
@@ -93,12 +99,13 @@ void paint_uniform_color(PointCloud& cloud, const Eigen::Vector3d& rgb) {
 
 PointCloud select_by_mask(const PointCloud& cloud, const std::vector<uint8_t>& keep) {
     PointCloud out;
-    const bool normals = cloud.has_normals(), colors = cloud.has_colors();
+    const bool normals = cloud.has_normals(), colors = cloud.has_colors(), covariances = cloud.has_covariances();
     for (size_t i = 0; i < cloud.points.size(); ++i) {
         if (!keep[i]) continue;
         out.points.push_back(cloud.points[i]);
         if (normals) out.normals.push_back(cloud.normals[i]);
         if (colors) out.colors.push_back(cloud.colors[i]);
+        if (covariances) out.covariances.push_back(cloud.covariances[i]);
     }
     return out;
 }

@@ -72,11 +72,15 @@ static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)size
   o3d_image_t *, const o3d_image_t *,
   o3d_rgbd_image_t *, const o3d_rgbd_image_t *,
   o3d_camera_trajectory_t *, const o3d_camera_trajectory_t *,
+  o3d_lineset_t *, const o3d_lineset_t *,
+  o3d_voxelgrid_t *, const o3d_voxelgrid_t *,
+  o3d_octree_t *, const o3d_octree_t *,
   void *, o3d_log_callback, o3d_progress_callback
 }
 %apply SWIGTYPE **O3D_PTROUT {
   o3d_pointcloud_t **, o3d_kdtree_t **, o3d_search_result_t **, o3d_registration_result_t **,
   o3d_buffer_t **, o3d_trianglemesh_t **, o3d_image_t **, o3d_rgbd_image_t **, o3d_camera_trajectory_t **,
+  o3d_lineset_t **, o3d_voxelgrid_t **, o3d_octree_t **,
   const uint8_t **out_data, uint8_t **out_data, const double **out_data, double **out_data,
   const int32_t **out_data, int32_t **out_data,
   const int64_t **out_offsets, const int32_t **out_indices, const double **out_distances2
@@ -97,6 +101,7 @@ static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)size
 %apply const double *O3D_IN { const double rgb[ANY] }
 %apply const float *O3D_IN { const float *xyz, const float *rgb }
 %apply const int32_t *O3D_IN { const int32_t *indices }
+%apply const double *O3D_IN { const double *data } /* set_covariances: n x 9 */
 %apply double *O3D_OUT { double *out, double out[ANY], double out_min[ANY], double out_max[ANY] }
 %apply int32_t *O3D_SOUT { int32_t *out }
 %apply size_t *O3D_SOUT { size_t *out_n }
@@ -168,3 +173,54 @@ static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)size
 %include "o3d/registration.h"
 %clear double *out;
 %clear int32_t *out;
+
+/* ---- boundingbox.h, hull.h, lineset.h, voxelgrid.h, octree.h ---------------------------------- */
+/* o3d_obb_t and o3d_octree_node_info_t are frozen-layout value structs: (non-public) proxy classes
+ * whose fixed-size array members are read and written as one flat double[] through the o3dx_ helpers
+ * below (SWIG would otherwise expose them as opaque double pointers). */
+%ignore o3d_obb::center;
+%ignore o3d_obb::R;
+%ignore o3d_obb::extent;
+%ignore o3d_octree_node_info::origin;
+%apply const double *O3D_IN { const double *values, const double point[ANY] }
+%apply double *O3D_OUT { double *out_values, double out_origin[ANY], double out_color[ANY] }
+%inline %{
+/* The box as 15 doubles: center (3), row-major R (9), extent (3). */
+static void o3dx_obb_set(o3d_obb_t *obb, const double *values) {
+  int i;
+  if (!obb || !values) return;
+  for (i = 0; i < 3; ++i) obb->center[i] = values[i];
+  for (i = 0; i < 9; ++i) obb->R[i] = values[3 + i];
+  for (i = 0; i < 3; ++i) obb->extent[i] = values[12 + i];
+}
+static void o3dx_obb_get(const o3d_obb_t *obb, double *out_values) {
+  int i;
+  if (!obb || !out_values) return;
+  for (i = 0; i < 3; ++i) out_values[i] = obb->center[i];
+  for (i = 0; i < 9; ++i) out_values[3 + i] = obb->R[i];
+  for (i = 0; i < 3; ++i) out_values[12 + i] = obb->extent[i];
+}
+/* The node cube's min corner (3 doubles). */
+static void o3dx_octree_node_info_origin(const o3d_octree_node_info_t *info, double *out_values) {
+  int i;
+  if (!info || !out_values) return;
+  for (i = 0; i < 3; ++i) out_values[i] = info->origin[i];
+}
+%}
+
+%apply double *O3D_OUT { double *out, double out[ANY], double *out_colors }
+%apply int32_t *O3D_OUT { int32_t *out, int32_t *out_indices, int32_t *out_point_indices,
+                          int32_t *out_grid_index, int32_t out_index[ANY], int32_t *out_included }
+%apply const int32_t *O3D_IN { const int32_t *pairs }
+%include "o3d/boundingbox.h"
+%include "o3d/hull.h"
+%include "o3d/lineset.h"
+%clear double *out;
+/* voxelgrid.h / octree.h: `double *out` and the root's size / depth / found flag are scalars */
+%apply double *O3D_SOUT { double *out, double *out_size }
+%apply int32_t *O3D_SOUT { int32_t *out_max_depth, int32_t *out_found }
+%include "o3d/voxelgrid.h"
+%include "o3d/octree.h"
+%clear double *out;
+%clear int32_t *out;
+%clear int32_t *out_indices;

@@ -14,9 +14,12 @@
 #include "o3d/pointcloud.h"
 #include "o3d/camera/pinhole_camera.h"
 #include "o3d/geometry/image.h"
+#include "o3d/geometry/line_set.h"
+#include "o3d/geometry/octree.h"
 #include "o3d/geometry/point_cloud.h"
 #include "o3d/geometry/rgbd_image.h"
 #include "o3d/geometry/triangle_mesh.h"
+#include "o3d/geometry/voxel_grid.h"
 #include "o3d/kdtree/kd_tree.h"
 #include "o3d/utility/error.h"
 
@@ -38,6 +41,18 @@ struct o3d_rgbd_image {
 
 struct o3d_camera_trajectory {
     o3d::camera::PinholeCameraTrajectory trajectory;
+};
+
+struct o3d_lineset {
+    o3d::geometry::LineSet lineset;
+};
+
+struct o3d_voxelgrid {
+    o3d::geometry::VoxelGrid grid;
+};
+
+struct o3d_octree {
+    o3d::geometry::Octree octree;
 };
 
 struct o3d_buffer {

@@ -62,6 +62,15 @@ namespace O3d
             return (ulong)(values.Length / 3);
         }
 
+        /// <summary><paramref name="values"/> cut to the <paramref name="n"/> items a copy-out call reported.</summary>
+        internal static int[] Trim(int[] values, ulong n)
+        {
+            if (n >= (ulong)values.Length) return values;
+            var r = new int[n];
+            Array.Copy(values, r, (long)n);
+            return r;
+        }
+
         internal static double[] Fixed(double[] values, int length, string name, bool nullable)
         {
             if (values == null)

@@ -523,6 +523,7 @@ static class Test
         });
 
         GeometryTests();
+        ShapesTests();
 
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
@@ -1087,6 +1088,316 @@ static class Test
             Throws<ObjectDisposedException>(() => { var n = mesh.NumVertices; }, "mesh after Dispose");
             for (int i = 0; i < 50; i++) TriangleMesh.CreateBox();
             GC.Collect(); GC.WaitForPendingFinalizers();
+        });
+    }
+
+    // ---- oriented boxes, hulls, line sets, voxel grids, octrees, covariances (the same in ShapesTest.java) ----
+    // Orders and indices checked against Open3D 0.20: tools/reference/record_shapes_bindings.py.
+
+    // The 8 corners of [0,1]^3 (index = x + 2y + 4z) then 5 interior points.
+    static double[] CubeWithInterior()
+    {
+        var p = new List<double>();
+        for (int c = 0; c < 8; c++) { p.Add(c & 1); p.Add((c >> 1) & 1); p.Add((c >> 2) & 1); }
+        p.AddRange(new double[] { 0.5, 0.5, 0.5, 0.2, 0.3, 0.4, 0.9, 0.1, 0.5, 0.7, 0.7, 0.2, 0.1, 0.8, 0.9 });
+        return p.ToArray();
+    }
+
+    static bool SameRows(double[] a, double[] b, double tol)
+    {
+        if (a.Length != b.Length) return false;
+        var used = new bool[b.Length / 3];
+        for (int i = 0; i < a.Length / 3; i++)
+        {
+            bool found = false;
+            for (int j = 0; j < b.Length / 3 && !found; j++)
+                if (!used[j] && Math.Abs(a[3 * i] - b[3 * j]) <= tol && Math.Abs(a[3 * i + 1] - b[3 * j + 1]) <= tol &&
+                    Math.Abs(a[3 * i + 2] - b[3 * j + 2]) <= tol) { used[j] = true; found = true; }
+            if (!found) return false;
+        }
+        return true;
+    }
+
+    static double Det3(double[] m, int o)
+    {
+        return m[o] * (m[o + 4] * m[o + 8] - m[o + 5] * m[o + 7]) - m[o + 1] * (m[o + 3] * m[o + 8] - m[o + 5] * m[o + 6]) +
+               m[o + 2] * (m[o + 3] * m[o + 7] - m[o + 4] * m[o + 6]);
+    }
+
+    static void ShapesTests()
+    {
+        Run("convex hull of a cube with interior points", () =>
+        {
+            var pts = CubeWithInterior();
+            using (var pc = new PointCloud(pts))
+            using (var hull = pc.ComputeConvexHull())
+            {
+                Check(hull.Mesh.NumVertices == 8 && hull.Mesh.NumTriangles == 12, "8 vertices, 12 triangles: " +
+                      hull.Mesh.NumVertices + ", " + hull.Mesh.NumTriangles);
+                Near(hull.Mesh.GetVolume(), 1, 1e-12, "volume");
+                Check(hull.Mesh.IsWatertight(), "watertight");
+                Check(hull.PointIndices.Length == 8, "one index per vertex");
+                var v = hull.Mesh.Vertices;
+                for (int i = 0; i < 8; i++)
+                {
+                    int k = hull.PointIndices[i];
+                    Check(k >= 0 && k < 8, "hull vertex " + i + " is a corner, got index " + k);
+                    AllNear(new[] { v[3 * i], v[3 * i + 1], v[3 * i + 2] }, new[] { pts[3 * k], pts[3 * k + 1], pts[3 * k + 2] }, 0, "vertex = its point");
+                }
+                Check(hull.PointIndices.Distinct().Count() == 8, "distinct corners");
+            }
+            using (var box = TriangleMesh.CreateBox(1, 2, 3))
+            using (var hull = box.ComputeConvexHull())
+            {
+                Near(hull.Mesh.GetVolume(), 6, 1e-12, "mesh hull volume");
+                Check(hull.Mesh.NumTriangles == 12 && hull.PointIndices.Length == 8, "mesh hull counts");
+            }
+            using (var flat = new PointCloud(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0.5, 0.5, 0 }))
+            {
+                Throws<O3dException>(() => flat.ComputeConvexHull(), "coplanar points without joggle");
+                using (var j = flat.ComputeConvexHull(true)) Check(j.Mesh.NumTriangles > 0, "joggled coplanar hull");
+            }
+            using (var three = new PointCloud(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }))
+                Throws<O3dException>(() => three.ComputeConvexHull(true), "3 points");
+            using (var empty = new PointCloud()) Throws<O3dException>(() => empty.ComputeConvexHull(), "empty cloud");
+        });
+
+        Run("hidden point removal", () =>
+        {
+            // Points on the unit sphere seen from (0, 0, 5): only the cap facing the camera (z > 0.2) is visible.
+            var p = new List<double>();
+            var r = new Random(3);
+            while (p.Count < 3 * 400)
+            {
+                double x = 2 * r.NextDouble() - 1, y = 2 * r.NextDouble() - 1, z = 2 * r.NextDouble() - 1, n = Math.Sqrt(x * x + y * y + z * z);
+                if (n < 0.1 || n > 1) continue;
+                p.Add(x / n); p.Add(y / n); p.Add(z / n);
+            }
+            var pts = p.ToArray();
+            using (var pc = new PointCloud(pts))
+            using (var res = pc.HiddenPointRemoval(new double[] { 0, 0, 5 }, 500))
+            {
+                Check(res.PointIndices.Length > 20 && res.PointIndices.Length < 250, "visible count " + res.PointIndices.Length);
+                foreach (int i in res.PointIndices)
+                {
+                    Check(i >= 0 && i < 400, "index in range " + i);
+                    Check(pts[3 * i + 2] > 0, "visible point faces the camera: z = " + pts[3 * i + 2]);
+                }
+                Check(res.Mesh.NumTriangles > 0, "hull mesh");
+                ThrowsStatus(Status.InvalidArgument, () => pc.HiddenPointRemoval(new double[] { 0, 0, 5 }, -1), "negative radius");
+                Throws<ArgumentException>(() => pc.HiddenPointRemoval(new double[] { 0, 0 }, 1), "camera of 2 values");
+            }
+        });
+
+        Run("oriented bounding box", () =>
+        {
+            var aabb = OrientedBoundingBox.CreateFromAxisAlignedBoundingBox(new double[] { 0, 0, 0 }, new double[] { 1, 2, 3 });
+            AllNear(aabb.Center, new[] { 0.5, 1, 1.5 }, 1e-15, "center");
+            AllNear(aabb.Extent, new double[] { 1, 2, 3 }, 1e-15, "extent");
+            AllNear(aabb.R, new double[] { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, 0, "R");
+            Near(aabb.Volume, 6, 1e-12, "volume");
+            AllNear(aabb.GetBoxPoints(), new double[] { 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 3, 1, 2, 3, 0, 2, 3, 1, 0, 3, 1, 2, 0 }, 1e-12,
+                    "box points in Open3D's order");
+            Check(aabb.GetPointIndicesWithinBoundingBox(new double[] { 0.5, 0.5, 0.5, 2, 0, 0, 1, 2, 3, -0.1, 1, 1 })
+                      .SequenceEqual(new[] { 0, 2 }), "indices within (boundary included)");
+
+            // PCA box of a 2 x 3 x 4 block: volume 24, extents {2, 3, 4}, orthonormal R.
+            var pts = new List<double>();
+            for (int c = 0; c < 8; c++) { pts.Add(2 * (c & 1)); pts.Add(3 * ((c >> 1) & 1)); pts.Add(4 * ((c >> 2) & 1)); }
+            pts.AddRange(new double[] { 1, 1.5, 2, 0.5, 0.5, 0.5 });
+            var obb = OrientedBoundingBox.CreateFromPoints(pts.ToArray());
+            Near(obb.Volume, 24, 1e-9, "PCA volume");
+            var e = obb.Extent; Array.Sort(e);
+            AllNear(e, new double[] { 2, 3, 4 }, 1e-9, "PCA extents");
+            AllNear(obb.Center, new[] { 1, 1.5, 2 }, 1e-9, "PCA center");
+            var R = obb.R;
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    Near(R[i] * R[j] + R[3 + i] * R[3 + j] + R[6 + i] * R[6 + j], i == j ? 1 : 0, 1e-9, "R^T R");
+            Check(SameRows(obb.GetBoxPoints(), pts.Take(24).ToArray(), 1e-9), "PCA box corners are the block's");
+            using (var pc = new PointCloud(pts.ToArray()))
+                Near(pc.GetOrientedBoundingBox().Volume, 24, 1e-9, "cloud OBB volume");
+            using (var mesh = TriangleMesh.CreateBox(2, 3, 4))
+                Near(mesh.GetOrientedBoundingBox().Volume, 24, 1e-9, "mesh OBB volume");
+
+            Throws<O3dException>(() => OrientedBoundingBox.CreateFromPoints(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }), "3 points");
+            Throws<O3dException>(() => OrientedBoundingBox.CreateFromPoints(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0 }), "planar");
+            Near(OrientedBoundingBox.CreateFromPoints(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0 }, true).Volume, 0, 1e-3, "robust planar");
+            ThrowsStatus(Status.InvalidArgument, () => OrientedBoundingBox.CreateFromPoints(new double[] { 0, 0, double.NaN, 1, 0, 0, 0, 1, 0, 0, 0, 1 }), "NaN");
+            Throws<ArgumentException>(() => new OrientedBoundingBox(new double[3], new double[8], new double[3]), "R of 8 values");
+        });
+
+        Run("crop by an oriented box", () =>
+        {
+            // A box along the diagonal x = y (45 degrees about z), 2 long, 0.2 wide and high.
+            double c = Math.Sqrt(0.5);
+            var box = new OrientedBoundingBox(new double[] { 0, 0, 0 }, new[] { c, -c, 0, c, c, 0, 0, 0, 1 }, new[] { 2, 0.2, 0.2 });
+            using (var pc = new PointCloud(new double[] { 0.5, 0.5, 0, -0.5, -0.5, 0, 0.5, -0.5, 0, 0, 0, 0 }))
+            {
+                Check(box.GetPointIndicesWithinBoundingBox(pc.Points).SequenceEqual(new[] { 0, 1, 3 }), "indices within");
+                using (var inside = pc.Crop(box)) Check(SameRows(inside.Points, new double[] { 0.5, 0.5, 0, -0.5, -0.5, 0, 0, 0, 0 }, 0), "inside");
+                using (var outside = pc.Crop(box, true)) AllNear(outside.Points, new[] { 0.5, -0.5, 0 }, 0, "outside");
+                Throws<ArgumentNullException>(() => pc.Crop((OrientedBoundingBox)null), "null box");
+            }
+            using (var mesh = TriangleMesh.CreateBox())
+            {
+                var bottom = OrientedBoundingBox.CreateFromAxisAlignedBoundingBox(new[] { -0.1, -0.1, -0.1 }, new[] { 1.1, 1.1, 0.5 });
+                using (var cut = mesh.Crop(bottom))
+                {
+                    Check(cut.NumVertices == 4 && cut.NumTriangles == 2, "bottom face: " + cut.NumVertices + " vertices, " + cut.NumTriangles + " triangles");
+                    foreach (var z in cut.Vertices.Where((x, i) => i % 3 == 2)) Near(z, 0, 0, "bottom z");
+                }
+            }
+        });
+
+        Run("line sets", () =>
+        {
+            using (var ls = LineSet.CreateFromAxisAlignedBoundingBox(new double[] { 0, 0, 0 }, new double[] { 1, 2, 3 }))
+            {
+                Check(ls.NumPoints == 8 && ls.NumLines == 12, "8 points, 12 lines");
+                var p = ls.Points; var l = ls.Lines;
+                var lengths = new int[4];
+                for (int i = 0; i < 12; i++)
+                {
+                    int a = l[2 * i], b = l[2 * i + 1];
+                    double d = Math.Sqrt(Math.Pow(p[3 * a] - p[3 * b], 2) + Math.Pow(p[3 * a + 1] - p[3 * b + 1], 2) + Math.Pow(p[3 * a + 2] - p[3 * b + 2], 2));
+                    int k = (int)Math.Round(d);
+                    Near(d, k, 1e-12, "edge length");
+                    Check(k >= 1 && k <= 3, "edge along an axis");
+                    lengths[k]++;
+                }
+                Check(lengths[1] == 4 && lengths[2] == 4 && lengths[3] == 4, "4 edges of each length");
+                var obb = OrientedBoundingBox.CreateFromAxisAlignedBoundingBox(new double[] { 0, 0, 0 }, new double[] { 1, 2, 3 });
+                using (var lo = LineSet.CreateFromOrientedBoundingBox(obb))
+                {
+                    AllNear(lo.Points, obb.GetBoxPoints(), 1e-12, "points in box-point order");
+                    Check(lo.NumLines == 12, "obb lines");
+                }
+                ls.PaintUniformColor(new[] { 1, 0.5, 0 });
+                Check(ls.Colors.Length == 36 && ls.Colors[1] == 0.5, "colors per line");
+                ls.Transform(new double[] { 1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 });
+                Near(ls.Points[0], p[0] + 10, 0, "translated");
+                long rows; var view = ls.LinesView(out rows);
+                Check(rows == 12 && view != IntPtr.Zero, "lines view");
+                var copy = new int[24]; Marshal.Copy(view, copy, 0, 24);
+                Check(copy.SequenceEqual(ls.Lines), "view == copy");
+                using (var c = ls.Clone()) { ls.Lines = new int[0]; Check(c.NumLines == 12 && ls.NumLines == 0, "deep clone"); }
+            }
+            using (var box = TriangleMesh.CreateBox())
+            using (var edges = LineSet.CreateFromTriangleMesh(box))
+                Check(edges.NumPoints == 8 && edges.NumLines == 18, "box mesh: 12 edges + 6 diagonals, got " + edges.NumLines);
+            using (var a = new PointCloud(new double[] { 0, 0, 0, 1, 0, 0 }))
+            using (var b = new PointCloud(new double[] { 0, 1, 0, 1, 1, 0, 2, 1, 0 }))
+            {
+                using (var corr = LineSet.CreateFromPointCloudCorrespondences(a, b, new[] { 0, 2, 1, 0 }))
+                {
+                    Check(corr.NumPoints == 5, "points of both clouds");
+                    Check(corr.Lines.SequenceEqual(new[] { 0, 4, 1, 2 }), "lines offset into cloud1: " + string.Join(",", corr.Lines));
+                }
+                ThrowsStatus(Status.InvalidArgument, () => LineSet.CreateFromPointCloudCorrespondences(a, b, new[] { 0, 3 }), "pair out of range");
+                Throws<ArgumentException>(() => LineSet.CreateFromPointCloudCorrespondences(a, b, new[] { 0 }), "odd pairs");
+            }
+            using (var ls = new LineSet(new double[] { 0, 0, 0, 1, 1, 1 }, new[] { 0, 1 }))
+            {
+                Check(ls.NumPoints == 2 && ls.NumLines == 1 && ls.Lines.SequenceEqual(new[] { 0, 1 }), "constructed");
+                Throws<ArgumentException>(() => ls.Lines = new[] { 0, 1, 2 }, "odd line array");
+                Throws<ArgumentException>(() => ls.Points = new double[] { 0, 1 }, "points not a multiple of 3");
+                ls.Dispose();
+                Throws<ObjectDisposedException>(() => { var n = ls.NumLines; }, "after Dispose");
+            }
+        });
+
+        Run("voxel grids", () =>
+        {
+            using (var pc = new PointCloud(new double[] { 0, 0, 0, 0.05, 0.05, 0.05, 1, 0, 0, 0, 0, 1 }))
+            {
+                pc.Colors = new double[] { 1, 0, 0, 0, 0, 1, 0, 1, 0, 1, 1, 1 };
+                using (var grid = VoxelGrid.CreateFromPointCloud(pc, 0.5))
+                {
+                    Near(grid.VoxelSize, 0.5, 0, "voxel size");
+                    AllNear(grid.Origin, new[] { -0.25, -0.25, -0.25 }, 1e-15, "origin = min - size / 2");
+                    Check(grid.NumVoxels == 3, "3 voxels");
+                    var v = grid.GetVoxels();
+                    Check(v.Count == 3 && v.GridIndices.SequenceEqual(new[] { 0, 0, 0, 0, 0, 2, 2, 0, 0 }), "sorted grid indices " + string.Join(",", v.GridIndices));
+                    AllNear(v.Colors, new double[] { 0.5, 0, 0.5, 1, 1, 1, 0, 1, 0 }, 1e-12, "mean colors");
+                    Check(grid.GetVoxel(new double[] { 1, 0, 0 }).SequenceEqual(new[] { 2, 0, 0 }), "get voxel");
+                    Check(grid.CheckIfIncluded(new double[] { 1, 0, 0, 0.5, 0.5, 0.5 }).SequenceEqual(new[] { true, false }), "included");
+                    Throws<ArgumentException>(() => grid.GetVoxel(new double[] { 1, 0 }), "point of 2 values");
+                }
+                using (var grid = VoxelGrid.CreateFromPointCloudWithinBounds(pc, 1, new double[] { 0, 0, 0 }, new double[] { 2, 2, 2 }))
+                {
+                    AllNear(grid.Origin, new double[] { 0, 0, 0 }, 0, "bounded origin");
+                    Check(grid.GetVoxels().GridIndices.SequenceEqual(new[] { 0, 0, 0, 0, 0, 1, 1, 0, 0 }), "bounded grid indices");
+                }
+                ThrowsStatus(Status.InvalidArgument, () => VoxelGrid.CreateFromPointCloud(pc, 0), "voxel size 0");
+                ThrowsStatus(Status.InvalidArgument, () => VoxelGrid.CreateFromPointCloud(pc, double.NaN), "voxel size NaN");
+            }
+            using (var box = TriangleMesh.CreateBox())
+            using (var grid = VoxelGrid.CreateFromTriangleMesh(box, 0.5))
+            {
+                Check(grid.NumVoxels == 26, "surface voxels of a unit box: " + grid.NumVoxels);
+                Check(grid.CheckIfIncluded(new[] { 0.5, 0.5, 0.5, 0, 0, 0 }).SequenceEqual(new[] { false, true }), "hollow");
+            }
+        });
+
+        Run("octree", () =>
+        {
+            using (var pc = new PointCloud(new double[] { 0, 0, 0, 1, 1, 1, 0.1, 0.1, 0.1, 0.9, 0.9, 0.9, 0.2, 0.1, 0.1 }))
+            using (var tree = new Octree(2))
+            {
+                pc.Colors = new double[] { 0.3, 0, 0, 1, 1, 1, 0.6, 0, 0, 0, 0, 0, 0, 0.9, 0 };
+                tree.ConvertFromPointCloud(pc);
+                AllNear(tree.Origin, new double[] { 0, 0, 0 }, 0, "root origin");
+                Near(tree.Size, 1.01, 1e-12, "root size (1% expansion)");
+                Check(tree.MaxDepth == 2 && tree.NumLeafNodes == 2, "depth 2, 2 leaves: " + tree.NumLeafNodes);
+                var leaf = tree.LocateLeafNode(new[] { 0.05, 0.05, 0.05 });
+                Check(leaf != null && leaf.Indices.SequenceEqual(new[] { 0, 2, 4 }), "leaf indices");
+                AllNear(leaf.Color, new[] { 0.3, 0.3, 0 }, 1e-12, "mean color");
+                AllNear(leaf.Info.Origin, new double[] { 0, 0, 0 }, 0, "leaf origin");
+                Near(leaf.Info.Size, 0.2525, 1e-12, "leaf size");
+                Check(leaf.Info.Depth == 2 && leaf.Info.ChildIndex == 0, "depth / child");
+                leaf = tree.LocateLeafNode(new[] { 0.95, 0.95, 0.95 });
+                Check(leaf != null && leaf.Indices.SequenceEqual(new[] { 1, 3 }) && leaf.Info.ChildIndex == 7, "far leaf");
+                AllNear(leaf.Info.Origin, new[] { 0.7575, 0.7575, 0.7575 }, 1e-12, "far leaf origin");
+                Check(tree.LocateLeafNode(new[] { 0.5, 0.5, 0.5 }) == null, "empty cell");
+                Check(tree.LocateLeafNode(new double[] { 5, 5, 5 }) == null, "outside the root");
+                ThrowsStatus(Status.InvalidArgument, () => tree.LocateLeafNode(new[] { double.NaN, 0, 0 }), "NaN point");
+                using (var empty = new PointCloud()) ThrowsStatus(Status.InvalidArgument, () => tree.ConvertFromPointCloud(empty), "empty cloud");
+            }
+            ThrowsStatus(Status.InvalidArgument, () => new Octree(0), "max depth 0");
+        });
+
+        Run("covariances", () =>
+        {
+            // A planar 10 x 10 patch: every neighbourhood covariance is singular (normal direction z).
+            using (var pc = new PointCloud(GridWithOutliers().Take(300).ToArray()))
+            {
+                Check(!pc.HasCovariances && pc.Covariances.Length == 0, "none yet");
+                pc.EstimateCovariances(SearchParam.Knn(10));
+                Check(pc.HasCovariances, "estimated");
+                var cov = pc.Covariances;
+                Check(cov.Length == 900, "9 per point");
+                for (int i = 0; i < 100; i++)
+                {
+                    Near(Det3(cov, 9 * i), 0, 1e-15, "det " + i);
+                    Near(cov[9 * i + 8], 0, 0, "zz " + i);
+                    Check(cov[9 * i] > 0 && cov[9 * i + 4] > 0, "in-plane variance " + i);
+                    Near(cov[9 * i + 1], cov[9 * i + 3], 1e-15, "symmetric " + i);
+                }
+                long rows; var view = pc.CovariancesView(out rows);
+                var copy = new double[900]; Marshal.Copy(view, copy, 0, 900);
+                Check(rows == 100 && copy.SequenceEqual(cov), "view == copy");
+                using (var some = pc.SelectByIndex(new[] { 5, 7 }))
+                    Check(some.Covariances.SequenceEqual(cov.Skip(45).Take(9).Concat(cov.Skip(63).Take(9))), "follow select_by_index");
+                // 90 degrees about x: C -> R C R^T moves the zero variance from z to y.
+                pc.Rotate(new double[] { 1, 0, 0, 0, 0, -1, 0, 1, 0 });
+                var rot = pc.Covariances;
+                Near(rot[4], 0, 1e-15, "yy after rotation"); Near(rot[8], cov[4], 1e-15, "zz after rotation");
+                pc.Covariances = new double[] { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+                Check(!pc.HasCovariances, "one matrix for 100 points is not has_covariances");
+                Throws<ArgumentException>(() => pc.Covariances = new double[10], "not a multiple of 9");
+                ThrowsStatus(Status.InvalidArgument, () => pc.EstimateCovariances(SearchParam.Knn(0)), "knn 0");
+            }
         });
     }
 

@@ -1,6 +1,9 @@
-"""o3d.geometry: PointCloud, TriangleMesh, Image, RGBDImage, KDTreeFlann, KDTreeSearchParam*,
-AxisAlignedBoundingBox and the enums SimplificationContraction, FilterScope, ImageFilterType."""
+"""o3d.geometry: PointCloud, TriangleMesh, Image, RGBDImage, LineSet, VoxelGrid, Octree, KDTreeFlann,
+KDTreeSearchParam*, AxisAlignedBoundingBox, OrientedBoundingBox and the enums SimplificationContraction,
+FilterScope, ImageFilterType."""
 import numpy as np
+
+from . import _o3d
 
 from ._o3d import (  # noqa: F401
     ColorToIntensityConversionType,
@@ -15,7 +18,10 @@ from ._o3d import (  # noqa: F401
     KDTreeSearchParamHybrid,
     KDTreeSearchParamKNN,
     KDTreeSearchParamRadius,
+    LineSet,
+    Octree,
     PointCloud,
+    VoxelGrid,
 )
 
 
@@ -51,8 +57,186 @@ class AxisAlignedBoundingBox:
     def is_empty(self):
         return self.volume() <= 0.0
 
+    def get_box_points(self):
+        """The 8 corners (Open3D's order: min, min+x, min+y, min+z, max, max-x, max-y, max-z)."""
+        return _utility().Vector3dVector(_o3d._obb_get_box_points(self.get_oriented_bounding_box()))
+
+    def get_point_indices_within_bounding_box(self, points):
+        """Indices (ascending) of the (N, 3) points inside the box, boundary included."""
+        return _o3d._obb_get_point_indices_within(self.get_oriented_bounding_box(), points)
+
+    def get_axis_aligned_bounding_box(self):
+        return AxisAlignedBoundingBox(self.min_bound, self.max_bound)
+
+    def get_oriented_bounding_box(self, robust=False):
+        """The same box as an OrientedBoundingBox (R = identity)."""
+        return OrientedBoundingBox.create_from_axis_aligned_bounding_box(self)
+
+    @staticmethod
+    def create_from_points(points):
+        pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        if len(pts) == 0:
+            return AxisAlignedBoundingBox()
+        return AxisAlignedBoundingBox(pts.min(axis=0), pts.max(axis=0))
+
     def __repr__(self):
         return f"AxisAlignedBoundingBox: min: {tuple(self.min_bound)}, max: {tuple(self.max_bound)}"
+
+
+def _utility():
+    from . import utility
+
+    return utility
+
+
+class OrientedBoundingBox:
+    """Box of edge lengths ``extent`` along the columns of the rotation ``R``, centred at ``center`` (as
+    Open3D's). A value: computed by the library, stored here as numpy arrays."""
+
+    def __init__(self, center=None, R=None, extent=None):
+        if isinstance(center, OrientedBoundingBox):
+            other = center
+            center, R, extent = other.center, other.R, other.extent
+            self.color = np.array(other.color, dtype=np.float64)
+        else:
+            self.color = np.zeros(3)
+        if center is None and R is None and extent is None:
+            center, R, extent = np.zeros(3), np.eye(3), np.zeros(3)
+        elif center is None or R is None or extent is None:
+            raise TypeError("OrientedBoundingBox: give center, R and extent (or nothing)")
+        self.center = np.array(center, dtype=np.float64).reshape(3)
+        self.R = np.array(R, dtype=np.float64).reshape(3, 3)
+        self.extent = np.array(extent, dtype=np.float64).reshape(3)
+
+    @staticmethod
+    def create_from_points(points, robust=False):
+        """Oriented box of (N, 3) points (PCA of their convex hull); robust=True handles degenerate sets."""
+        return OrientedBoundingBox(*_o3d._obb_create_from_points(points, bool(robust)))
+
+    @staticmethod
+    def create_from_axis_aligned_bounding_box(aabb_box):
+        return OrientedBoundingBox(*_o3d._obb_create_from_axis_aligned_bounding_box(aabb_box.get_min_bound(),
+                                                                                   aabb_box.get_max_bound()))
+
+    def get_box_points(self):
+        """The 8 corners, in Open3D's order."""
+        return _utility().Vector3dVector(_o3d._obb_get_box_points(self))
+
+    def get_point_indices_within_bounding_box(self, points):
+        """Indices (ascending) of the (N, 3) points inside the box, boundary included."""
+        return _o3d._obb_get_point_indices_within(self, points)
+
+    def get_center(self):
+        return self.center.copy()
+
+    def get_extent(self):
+        return self.extent.copy()
+
+    def get_half_extent(self):
+        return self.extent / 2.0
+
+    def get_max_extent(self):
+        return float(np.max(self.extent))
+
+    def get_min_bound(self):
+        return np.asarray(self.get_box_points()).min(axis=0)
+
+    def get_max_bound(self):
+        return np.asarray(self.get_box_points()).max(axis=0)
+
+    def volume(self):
+        return float(np.prod(self.extent))
+
+    def is_empty(self):
+        return self.volume() <= 0.0
+
+    def get_axis_aligned_bounding_box(self):
+        return AxisAlignedBoundingBox(self.get_min_bound(), self.get_max_bound())
+
+    def get_oriented_bounding_box(self, robust=False):
+        return OrientedBoundingBox(self)
+
+    def translate(self, translation, relative=True):
+        t = np.asarray(translation, dtype=np.float64).reshape(3)
+        self.center = self.center + t if relative else t.copy()
+        return self
+
+    def rotate(self, R, center=None):
+        R = np.asarray(R, dtype=np.float64).reshape(3, 3)
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        self.center = R @ (self.center - c) + c
+        self.R = R @ self.R
+        return self
+
+    def scale(self, scale, center=None):
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        self.extent = self.extent * scale
+        self.center = scale * (self.center - c) + c
+        return self
+
+    def __repr__(self):
+        return f"OrientedBoundingBox: center: {tuple(self.center)}, extent: {tuple(self.extent)}"
+
+
+class Voxel:
+    """One occupied voxel of a VoxelGrid: grid_index (int32 (3,)) and color (float64 (3,))."""
+
+    def __init__(self, grid_index=(0, 0, 0), color=(0.0, 0.0, 0.0)):
+        self.grid_index = np.array(grid_index, dtype=np.int32).reshape(3)
+        self.color = np.array(color, dtype=np.float64).reshape(3)
+
+    def __repr__(self):
+        return f"Voxel with grid_index: {tuple(int(i) for i in self.grid_index)}, color: {tuple(self.color)}"
+
+
+def _voxel_grid_get_voxels(self):
+    """The occupied voxels, sorted by grid index (list of Voxel)."""
+    index, colors = self._get_voxel_arrays()
+    return [Voxel(i, c) for i, c in zip(index, colors)]
+
+
+VoxelGrid.get_voxels = _voxel_grid_get_voxels
+
+
+class OctreeNodeInfo:
+    """Where an octree node sits: origin (min corner), size (edge), depth (0: root), child_index (0..7)."""
+
+    def __init__(self, origin=(0.0, 0.0, 0.0), size=0.0, depth=0, child_index=0):
+        self.origin = np.array(origin, dtype=np.float64).reshape(3)
+        self.size = float(size)
+        self.depth = int(depth)
+        self.child_index = int(child_index)
+
+    def __repr__(self):
+        return (f"OctreeNodeInfo with origin {tuple(self.origin)}, size {self.size}, depth {self.depth}, "
+                f"child_index {self.child_index}")
+
+
+class OctreeLeafNode:
+    """Base of the octree leaves (as Open3D's)."""
+
+
+class OctreePointColorLeafNode(OctreeLeafNode):
+    """A leaf: indices of its points (list of int, ascending) and their mean color."""
+
+    def __init__(self, indices=None, color=(0.0, 0.0, 0.0)):
+        self.indices = list(indices) if indices is not None else []
+        self.color = np.array(color, dtype=np.float64).reshape(3)
+
+    def __repr__(self):
+        return f"OctreePointColorLeafNode with color {tuple(self.color)} containing {len(self.indices)} points."
+
+
+def _octree_locate_leaf_node(self, point):
+    """(OctreePointColorLeafNode, OctreeNodeInfo) of the leaf holding point, or (None, None)."""
+    found = self._locate_leaf_node(point)
+    if found is None:
+        return None, None
+    indices, color, origin, size, depth, child_index = found
+    return OctreePointColorLeafNode(indices, color), OctreeNodeInfo(origin, size, depth, child_index)
+
+
+Octree.locate_leaf_node = _octree_locate_leaf_node
 
 
 def _point_cloud_from_ply(data):
@@ -99,4 +283,6 @@ Image.__reduce__ = _image_reduce
 
 __all__ = ["PointCloud", "TriangleMesh", "Image", "RGBDImage", "SimplificationContraction", "FilterScope",
            "ImageFilterType", "ColorToIntensityConversionType", "KDTreeFlann", "KDTreeSearchParam",
-           "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox"]
+           "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox",
+           "OrientedBoundingBox", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo", "OctreeLeafNode",
+           "OctreePointColorLeafNode"]

@@ -117,6 +117,27 @@ class Vector2iVector(_Vector):
     _cols = 2
 
 
+class Matrix3dVector(_Vector):
+    """(N, 3, 3) float64 (e.g. per-point covariances)."""
+
+    _dtypes = (np.float64,)
+    _cols = 3
+
+    def __init__(self, data=None):
+        super().__init__(data)
+        self._data = self._check(self._data)
+
+    def _check(self, arr):
+        if arr.size == 0:
+            return arr.reshape(0, 3, 3)
+        if arr.ndim != 3 or arr.shape[1:] != (3, 3):
+            raise ValueError(f"Matrix3dVector: expected shape (N, 3, 3), got {arr.shape}")
+        return arr
+
+    def append(self, value):
+        self._data = np.concatenate([self._data, np.asarray(value, dtype=np.float64).reshape(1, 3, 3)])
+
+
 class IntVector(_Vector):
     """1-D int32."""
 
@@ -184,6 +205,6 @@ class VerbosityContextManager:
 # A Python callback must not be called once the interpreter is shutting down.
 atexit.register(_o3d._set_log_callback, None)
 
-__all__ = ["Vector3dVector", "Vector3iVector", "Vector2dVector", "Vector2iVector", "IntVector", "DoubleVector", "VerbosityLevel",
+__all__ = ["Vector3dVector", "Vector3iVector", "Vector2dVector", "Vector2iVector", "Matrix3dVector", "IntVector", "DoubleVector", "VerbosityLevel",
            "VerbosityContextManager", "set_verbosity_level", "get_verbosity_level", "set_log_callback",
            "set_num_threads", "get_num_threads"]

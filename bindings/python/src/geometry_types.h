@@ -26,6 +26,12 @@ using ImageHandle = Handle<o3d_image_t, &o3d_image_destroy>;
 using ImagePtr = std::shared_ptr<ImageHandle>;
 using RgbdHandle = Handle<o3d_rgbd_image_t, &o3d_rgbd_image_destroy>;
 using RgbdPtr = std::shared_ptr<RgbdHandle>;
+using LineSetHandle = Handle<o3d_lineset_t, &o3d_lineset_destroy>;
+using LineSetPtr = std::shared_ptr<LineSetHandle>;
+using VoxelGridHandle = Handle<o3d_voxelgrid_t, &o3d_voxelgrid_destroy>;
+using VoxelGridPtr = std::shared_ptr<VoxelGridHandle>;
+using OctreeHandle = Handle<o3d_octree_t, &o3d_octree_destroy>;
+using OctreePtr = std::shared_ptr<OctreeHandle>;
 
 /// Run `f(const T*)` under a shared lock with the GIL released; raise on failure.
 template <typename H, typename F>
@@ -103,6 +109,35 @@ std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle b
 py::object make_aabb(const double* lo, const double* hi);
 PyImage image_from_array(py::handle obj);
 
+/// o3d.geometry.LineSet; copy-on-write before resizing calls, as PyPointCloud.
+struct PyLineSet {
+    LineSetPtr h;
+    PyLineSet();
+    explicit PyLineSet(o3d_lineset_t* raw) : h(std::make_shared<LineSetHandle>(raw)) {}
+    LineSetPtr for_resize();
+};
+
+/// o3d.geometry.VoxelGrid (immutable once created: the C API has no mutating call).
+struct PyVoxelGrid {
+    VoxelGridPtr h;
+    explicit PyVoxelGrid(o3d_voxelgrid_t* raw) : h(std::make_shared<VoxelGridHandle>(raw)) {}
+};
+
+/// o3d.geometry.Octree.
+struct PyOctree {
+    OctreePtr h;
+    explicit PyOctree(o3d_octree_t* raw) : h(std::make_shared<OctreeHandle>(raw)) {}
+};
+
+/// Oriented boxes are the pure-Python o3d.geometry.OrientedBoundingBox (center, R, extent).
+bool is_obb(py::handle box);
+o3d_obb_t obb_of(py::handle box);
+py::object make_obb(const o3d_obb_t& obb);
+/// An (N,3) float64 C-contiguous copy-free (when possible) view of any (N,3) array-like.
+py::array_t<double> rows3_f64(py::handle obj, const char* what);
+/// Python list of int from int32 values.
+py::list int_list(const int32_t* v, size_t n);
+
 /// Enumerations of the new bindings, values equal to the C constants.
 enum class SimplificationContraction : int32_t { Average = O3D_SIMPLIFICATION_AVERAGE, Quadric = O3D_SIMPLIFICATION_QUADRIC };
 enum class FilterScope : int32_t {
@@ -135,5 +170,14 @@ void define_image(py::module_& m);
 void define_rgbd(py::module_& m);
 void define_camera(py::module_& m);
 void define_io_geometry(py::module_& m);
+void declare_lineset(py::module_& m);
+void declare_voxelgrid(py::module_& m);
+void declare_octree(py::module_& m);
+void define_boundingbox(py::module_& m);
+void define_hull(py::module_& m);
+void define_covariances(py::module_& m);
+void define_lineset(py::module_& m);
+void define_voxelgrid(py::module_& m);
+void define_octree(py::module_& m);
 
 }  // namespace o3dpy

@@ -34,7 +34,7 @@ py::array mat_to_array(const double* v, size_t rows, size_t cols) {
 
 std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle box) {
     if (box.is_none() || !py::hasattr(box, "get_min_bound") || !py::hasattr(box, "get_max_bound"))
-        throw py::type_error("crop: bounding_box must be an o3d.geometry.AxisAlignedBoundingBox, got " +
+        throw py::type_error("crop: bounding_box must be an o3d.geometry.AxisAlignedBoundingBox or OrientedBoundingBox, got " +
                              std::string(py::str(py::type::handle_of(box).attr("__name__"))));
     auto lo = as_vec3(box.attr("get_min_bound")(), "bounding_box.min_bound");
     auto hi = as_vec3(box.attr("get_max_bound")(), "bounding_box.max_bound");

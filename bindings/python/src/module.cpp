@@ -18,6 +18,9 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_camera(m);
     o::declare_trianglemesh_enums(m);
     o::declare_trianglemesh(m);
+    o::declare_lineset(m);
+    o::declare_voxelgrid(m);
+    o::declare_octree(m);
 
     o::define_utility(m);
     o::define_pointcloud(m);
@@ -31,4 +34,10 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_trianglemesh_processing(m);
     o::define_rgbd(m);
     o::define_io_geometry(m);
+    o::define_boundingbox(m);
+    o::define_hull(m);
+    o::define_covariances(m);
+    o::define_lineset(m);
+    o::define_voxelgrid(m);
+    o::define_octree(m);
 }

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "common.h"
+#include "geometry_types.h"
 
 namespace o3dpy {
 namespace {
@@ -63,7 +63,7 @@ py::tuple outlier_filter(const PyPointCloud& self, F&& f) {
 /// Read (min_bound, max_bound) of an AxisAlignedBoundingBox (or anything with get_min_bound/get_max_bound).
 std::pair<std::array<double, 3>, std::array<double, 3>> box_bounds(py::handle box) {
     if (box.is_none() || !py::hasattr(box, "get_min_bound") || !py::hasattr(box, "get_max_bound"))
-        throw py::type_error("crop: bounding_box must be an o3d.geometry.AxisAlignedBoundingBox, got " +
+        throw py::type_error("crop: bounding_box must be an o3d.geometry.AxisAlignedBoundingBox or OrientedBoundingBox, got " +
                              std::string(py::str(py::type::handle_of(box).attr("__name__"))));
     auto lo = as_vec3(box.attr("get_min_bound")(), "bounding_box.min_bound");
     auto hi = as_vec3(box.attr("get_max_bound")(), "bounding_box.max_bound");
@@ -102,15 +102,23 @@ void define_pointcloud_tools(py::module_& m) {
         .def(
             "crop",
             [](const PyPointCloud& self, py::handle bounding_box, bool invert) {
-                auto [lo, hi] = box_bounds(bounding_box);
                 o3d_pointcloud_t* out = nullptr;
+                if (is_obb(bounding_box)) {
+                    o3d_obb_t obb = obb_of(bounding_box);
+                    with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                        return o3d_pointcloud_crop_obb(&out, pc, &obb, invert ? 1 : 0);
+                    });
+                    return PyPointCloud(adopt(out));
+                }
+                auto [lo, hi] = box_bounds(bounding_box);
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_crop_aabb(&out, pc, lo.data(), hi.data(), invert ? 1 : 0);
                 });
                 return PyPointCloud(adopt(out));
             },
             py::arg("bounding_box"), py::arg("invert") = false,
-            "New cloud with the points inside the AxisAlignedBoundingBox (bounds inclusive); invert=True keeps "
+            "New cloud with the points inside the AxisAlignedBoundingBox or OrientedBoundingBox (bounds "
+            "inclusive); invert=True keeps "
             "the points outside.")
         .def(
             "segment_plane",

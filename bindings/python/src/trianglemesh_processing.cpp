@@ -160,12 +160,19 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "crop",
             [](const PyTriangleMesh& self, py::handle bounding_box) {
+                if (is_obb(bounding_box)) {
+                    o3d_obb_t obb = obb_of(bounding_box);
+                    return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
+                        return o3d_trianglemesh_crop_obb(out, m, &obb);
+                    });
+                }
                 auto [lo, hi] = aabb_bounds(bounding_box);
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_crop_aabb(out, m, lo.data(), hi.data());
                 });
             },
-            py::arg("bounding_box"), "New mesh of the triangles whose three vertices lie in the AxisAlignedBoundingBox.");
+            py::arg("bounding_box"), "New mesh of the triangles whose three vertices lie in the AxisAlignedBoundingBox or "
+                                   "OrientedBoundingBox.");
 
     cls.def_static(
            "create_box",

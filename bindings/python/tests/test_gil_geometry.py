@@ -23,3 +23,18 @@ def test_image_filter_releases_gil():
     assert np.asarray(out["i"][0]).shape == (3000, 3000)
     assert duration > 0.05
     assert stall < 0.5 * duration
+
+
+def test_convex_hull_and_covariances_release_gil():
+    pcd = o3d.geometry.PointCloud(np.random.default_rng(1).normal(size=(400_000, 3)))
+    out = {}
+
+    def work():
+        out["hull"] = pcd.compute_convex_hull()
+        pcd.estimate_covariances(o3d.geometry.KDTreeSearchParamKNN(knn=10))
+        out["grid"] = o3d.geometry.VoxelGrid.create_from_point_cloud(pcd, 0.05)
+
+    stall, duration = max_stall_during(work)
+    assert len(out["hull"][1]) > 0 and pcd.has_covariances() and out["grid"].has_voxels()
+    assert duration > 0.05
+    assert stall < 0.5 * duration

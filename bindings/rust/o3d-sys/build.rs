@@ -34,6 +34,11 @@ fn main() {
         "camera.h",
         "rgbd.h",
         "trianglemesh.h",
+        "boundingbox.h",
+        "hull.h",
+        "lineset.h",
+        "voxelgrid.h",
+        "octree.h",
     ] {
         println!("cargo:rerun-if-changed={}", include_dir.join("o3d").join(header).display());
     }

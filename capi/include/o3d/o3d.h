@@ -15,5 +15,10 @@
 #include "o3d/camera.h"
 #include "o3d/rgbd.h"
 #include "o3d/trianglemesh.h"
+#include "o3d/boundingbox.h"
+#include "o3d/hull.h"
+#include "o3d/lineset.h"
+#include "o3d/voxelgrid.h"
+#include "o3d/octree.h"
 
 #endif /* O3D_O3D_H */

@@ -220,6 +220,30 @@ O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(const o3d_pointclo
 O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(const o3d_pointcloud_t* pc, double* out,
                                                                size_t capacity, size_t* out_n);
 
+/* ---- Per-point covariances (o3d.geometry.PointCloud.covariances): N x 9, row-major 3x3 each ----
+ * A cloud carries covariances only when their count equals the point count (has_covariances). As in
+ * Open3D they follow the points through every operation that keeps a subset of the points
+ * (select_by_index, crop_aabb / crop_obb, uniform/random/farthest down-sampling, outlier removal,
+ * remove_non_finite_points), through append and clear, and rotate with transform/rotate (R C R^T);
+ * voxel_down_sample, which averages points, drops them. */
+
+/** @brief 1 when the cloud has one covariance per point, else 0. */
+O3D_API o3d_status o3d_pointcloud_has_covariances(const o3d_pointcloud_t* pc, int32_t* out);
+/** @brief Replace the covariances with `n` row-major 3x3 matrices (n x 9 doubles, copied). */
+O3D_API o3d_status o3d_pointcloud_set_covariances(o3d_pointcloud_t* pc, const double* data, size_t n);
+/** @brief Copy the covariances out (capacity matrices; `*out_n` always gets the count). */
+O3D_API o3d_status o3d_pointcloud_get_covariances(const o3d_pointcloud_t* pc, double* out, size_t capacity,
+                                                  size_t* out_n);
+/** @brief Borrowed read-only view of the covariances (n x 9 doubles). */
+O3D_API o3d_status o3d_pointcloud_covariances_view(const o3d_pointcloud_t* pc, const double** out_data,
+                                                   size_t* out_n);
+/**
+ * @brief Covariance of each point's neighbourhood (`param`: KNN, radius or hybrid; NULL: KNN 30 as
+ * Open3D), divided by the neighbour count; fewer than 3 neighbours give the identity (Open3D).
+ * @see PointCloud.estimate_covariances
+ */
+O3D_API o3d_status o3d_pointcloud_estimate_covariances(o3d_pointcloud_t* pc, const o3d_search_param_t* param);
+
 O3D_END_DECL
 
 #endif /* O3D_POINTCLOUD_H */

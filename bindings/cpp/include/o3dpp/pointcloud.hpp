@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "o3d/pointcloud.h"
+#include "o3dpp/boundingbox.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
@@ -237,6 +238,17 @@ public:
             return o3d_pointcloud_crop_aabb(o, get(), min_bound.data(), max_bound.data(), invert ? 1 : 0);
         });
     }
+    /// @brief Points inside `obb`, boundary included (outside when `invert`).
+    PointCloud crop(const OrientedBoundingBox& obb, bool invert = false) const {
+        const o3d_obb_t c = obb.to_c();
+        return adopt([&](o3d_pointcloud_t** o) { return o3d_pointcloud_crop_obb(o, get(), &c, invert ? 1 : 0); });
+    }
+    /// @brief Oriented box of the points (see OrientedBoundingBox::create_from_points).
+    OrientedBoundingBox get_oriented_bounding_box(bool robust = false) const {
+        o3d_obb_t c{};
+        check(o3d_pointcloud_get_oriented_bounding_box(get(), robust ? 1 : 0, &c));
+        return OrientedBoundingBox::from_c(c);
+    }
     /// @brief RANSAC plane: {(a, b, c, d) with a x + b y + c z + d = 0 and unit (a, b, c), inlier indices
     /// (ascending)}. Same seed → same result on any thread count.
     std::pair<std::array<double, 4>, std::vector<int32_t>> segment_plane(double distance_threshold, int ransac_n = 3,
@@ -269,6 +281,37 @@ public:
         check(o3d_pointcloud_compute_mahalanobis_distance(get(), out.data(), out.size(), &n));
         out.resize(n);
         return out;
+    }
+
+    // --- per-point covariances (row-major 3x3 each); they follow selection, append and transforms ---
+
+    /// @brief True when there is one covariance per point.
+    bool has_covariances() const { return flag(&o3d_pointcloud_has_covariances); }
+    void set_covariances(const double* data, std::size_t n) { check(o3d_pointcloud_set_covariances(get(), data, n)); }
+    void set_covariances(const std::vector<Mat3>& c) {
+        set_covariances(c.empty() ? nullptr : c.front().data(), c.size());
+    }
+    std::vector<Mat3> get_covariances() const {
+        static_assert(sizeof(Mat3) == 9 * sizeof(double), "Mat3 must be 9 packed doubles");
+        size_t n = 0;
+        check(o3d_pointcloud_get_covariances(get(), nullptr, 0, &n));
+        std::vector<Mat3> out(n);
+        check(o3d_pointcloud_get_covariances(get(), n ? out.front().data() : nullptr, n, &n));
+        out.resize(n);
+        return out;
+    }
+    /// @brief Borrowed covariances as 9 * count values (valid until the next mutation).
+    Span<const double> covariances() const {
+        const double* data = nullptr;
+        size_t n = 0;
+        check(o3d_pointcloud_covariances_view(get(), &data, &n));
+        return {data, 9 * n};
+    }
+    /// @brief Covariance of each point's neighbourhood (default KNN 30, as Open3D).
+    PointCloud& estimate_covariances(const SearchParam& param = SearchParam{}) {
+        const o3d_search_param_t c = param.to_c();
+        check(o3d_pointcloud_estimate_covariances(get(), &c));
+        return *this;
     }
 
     /// @brief Run `create(o3d_pointcloud_t**)` and own what it returns.

@@ -7,9 +7,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "o3d/hull.h"
 #include "o3d/trianglemesh.h"
+#include "o3dpp/boundingbox.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
@@ -335,6 +338,38 @@ public:
         return adopt([&](o3d_trianglemesh_t** o) {
             return o3d_trianglemesh_crop_aabb(o, get(), min_bound.data(), max_bound.data());
         });
+    }
+
+    /// @brief Triangles whose three vertices lie inside `obb` (unused vertices dropped).
+    TriangleMesh crop(const OrientedBoundingBox& obb) const {
+        const o3d_obb_t c = obb.to_c();
+        return adopt([&](o3d_trianglemesh_t** o) { return o3d_trianglemesh_crop_obb(o, get(), &c); });
+    }
+    /// @brief Oriented box of the vertices.
+    OrientedBoundingBox get_oriented_bounding_box(bool robust = false) const {
+        o3d_obb_t c{};
+        check(o3d_trianglemesh_get_oriented_bounding_box(get(), robust ? 1 : 0, &c));
+        return OrientedBoundingBox::from_c(c);
+    }
+    /// @brief Convex hull of the vertices: {hull (outward triangles), per hull vertex the index of its vertex}.
+    std::pair<TriangleMesh, std::vector<int32_t>> compute_convex_hull(bool joggle_inputs = false) const {
+        std::vector<int32_t> indices(num_vertices());
+        o3d_trianglemesh_t* hull = nullptr;
+        size_t n = 0;
+        const o3d_status status = o3d_trianglemesh_compute_convex_hull(&hull, get(), joggle_inputs ? 1 : 0,
+                                                                       indices.data(), indices.size(), &n);
+        return adopt_with_indices(status, hull, std::move(indices), n);
+    }
+
+    /// @brief Own a mesh a C call wrote (even when it failed, so nothing leaks), then check its status.
+    static std::pair<TriangleMesh, std::vector<int32_t>> adopt_with_indices(o3d_status status,
+                                                                           o3d_trianglemesh_t* mesh,
+                                                                           std::vector<int32_t> indices,
+                                                                           std::size_t n) {
+        UniqueHandle<o3d_trianglemesh_t, &o3d_trianglemesh_destroy> owned(mesh);
+        check(status);
+        indices.resize(n < indices.size() ? n : indices.size());
+        return {TriangleMesh(owned.release()), std::move(indices)};
     }
 
     // --- primitives (Open3D's defaults) ---

@@ -318,6 +318,25 @@ extern "C" {
         capacity: usize,
         out_n: *mut usize,
     ) -> o3d_status;
+
+    // Per-point covariances (N x 9, row-major 3x3 each).
+    pub fn o3d_pointcloud_has_covariances(pc: *const o3d_pointcloud_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_pointcloud_set_covariances(pc: *mut o3d_pointcloud_t, data: *const f64, n: usize) -> o3d_status;
+    pub fn o3d_pointcloud_get_covariances(
+        pc: *const o3d_pointcloud_t,
+        out: *mut f64,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_covariances_view(
+        pc: *const o3d_pointcloud_t,
+        out_data: *mut *const f64,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_estimate_covariances(
+        pc: *mut o3d_pointcloud_t,
+        param: *const o3d_search_param_t,
+    ) -> o3d_status;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1103,4 +1122,263 @@ extern "C" {
     pub fn o3d_trianglemesh_create_tetrahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
     pub fn o3d_trianglemesh_create_octahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
     pub fn o3d_trianglemesh_create_icosahedron(out: *mut *mut o3d_trianglemesh_t, radius: f64) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// boundingbox.h
+// ---------------------------------------------------------------------------------------------
+
+/// Oriented bounding box (`o3d_obb_t`, frozen layout): centre, row-major rotation whose column k is
+/// the direction of `extent[k]`, full edge lengths.
+#[repr(C)]
+#[allow(non_snake_case)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct o3d_obb {
+    pub center: [f64; 3],
+    pub R: [f64; 9],
+    pub extent: [f64; 3],
+}
+pub type o3d_obb_t = o3d_obb;
+
+extern "C" {
+    pub fn o3d_obb_create_from_points(out: *mut o3d_obb_t, xyz: *const f64, n: usize, robust: i32) -> o3d_status;
+    pub fn o3d_obb_create_from_axis_aligned_bounding_box(
+        out: *mut o3d_obb_t,
+        min_bound: *const f64,
+        max_bound: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_obb_get_box_points(obb: *const o3d_obb_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_obb_get_point_indices_within(
+        obb: *const o3d_obb_t,
+        xyz: *const f64,
+        n: usize,
+        out_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_get_oriented_bounding_box(
+        pc: *const o3d_pointcloud_t,
+        robust: i32,
+        out: *mut o3d_obb_t,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_get_oriented_bounding_box(
+        mesh: *const o3d_trianglemesh_t,
+        robust: i32,
+        out: *mut o3d_obb_t,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_crop_obb(
+        out: *mut *mut o3d_pointcloud_t,
+        pc: *const o3d_pointcloud_t,
+        obb: *const o3d_obb_t,
+        invert: i32,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_crop_obb(
+        out: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        obb: *const o3d_obb_t,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// hull.h
+// ---------------------------------------------------------------------------------------------
+
+extern "C" {
+    pub fn o3d_pointcloud_compute_convex_hull(
+        out_mesh: *mut *mut o3d_trianglemesh_t,
+        pc: *const o3d_pointcloud_t,
+        joggle_inputs: i32,
+        out_point_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_trianglemesh_compute_convex_hull(
+        out_mesh: *mut *mut o3d_trianglemesh_t,
+        mesh: *const o3d_trianglemesh_t,
+        joggle_inputs: i32,
+        out_point_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_pointcloud_hidden_point_removal(
+        out_mesh: *mut *mut o3d_trianglemesh_t,
+        pc: *const o3d_pointcloud_t,
+        camera_location: *const f64,
+        radius: f64,
+        out_point_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// lineset.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque line set (`o3d_lineset_t`).
+#[repr(C)]
+pub struct o3d_lineset {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_lineset_t = o3d_lineset;
+
+pub const O3D_LINESET_POINTS: i32 = 0;
+pub const O3D_LINESET_COLORS: i32 = 1;
+
+extern "C" {
+    pub fn o3d_lineset_create(out: *mut *mut o3d_lineset_t) -> o3d_status;
+    pub fn o3d_lineset_destroy(lineset: *mut o3d_lineset_t);
+    pub fn o3d_lineset_clone(out: *mut *mut o3d_lineset_t, src: *const o3d_lineset_t) -> o3d_status;
+    pub fn o3d_lineset_num_points(lineset: *const o3d_lineset_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_lineset_num_lines(lineset: *const o3d_lineset_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_lineset_set_array(lineset: *mut o3d_lineset_t, which: i32, data: *const f64, rows: usize) -> o3d_status;
+    pub fn o3d_lineset_get_array(
+        lineset: *const o3d_lineset_t,
+        which: i32,
+        out: *mut f64,
+        capacity: usize,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_lineset_array_view(
+        lineset: *const o3d_lineset_t,
+        which: i32,
+        out_data: *mut *const f64,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_lineset_set_lines(lineset: *mut o3d_lineset_t, data: *const i32, rows: usize) -> o3d_status;
+    pub fn o3d_lineset_get_lines(
+        lineset: *const o3d_lineset_t,
+        out: *mut i32,
+        capacity: usize,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_lineset_lines_view(
+        lineset: *const o3d_lineset_t,
+        out_data: *mut *const i32,
+        out_rows: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_lineset_paint_uniform_color(lineset: *mut o3d_lineset_t, rgb: *const f64) -> o3d_status;
+    pub fn o3d_lineset_transform(lineset: *mut o3d_lineset_t, transform: *const f64) -> o3d_status;
+
+    pub fn o3d_lineset_create_from_point_cloud_correspondences(
+        out: *mut *mut o3d_lineset_t,
+        cloud0: *const o3d_pointcloud_t,
+        cloud1: *const o3d_pointcloud_t,
+        pairs: *const i32,
+        n_pairs: usize,
+    ) -> o3d_status;
+    pub fn o3d_lineset_create_from_oriented_bounding_box(
+        out: *mut *mut o3d_lineset_t,
+        obb: *const o3d_obb_t,
+    ) -> o3d_status;
+    pub fn o3d_lineset_create_from_axis_aligned_bounding_box(
+        out: *mut *mut o3d_lineset_t,
+        min_bound: *const f64,
+        max_bound: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_lineset_create_from_triangle_mesh(
+        out: *mut *mut o3d_lineset_t,
+        mesh: *const o3d_trianglemesh_t,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// voxelgrid.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque voxel grid (`o3d_voxelgrid_t`).
+#[repr(C)]
+pub struct o3d_voxelgrid {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_voxelgrid_t = o3d_voxelgrid;
+
+extern "C" {
+    pub fn o3d_voxelgrid_create_from_point_cloud(
+        out: *mut *mut o3d_voxelgrid_t,
+        pc: *const o3d_pointcloud_t,
+        voxel_size: f64,
+    ) -> o3d_status;
+    pub fn o3d_voxelgrid_create_from_point_cloud_within_bounds(
+        out: *mut *mut o3d_voxelgrid_t,
+        pc: *const o3d_pointcloud_t,
+        voxel_size: f64,
+        min_bound: *const f64,
+        max_bound: *const f64,
+    ) -> o3d_status;
+    pub fn o3d_voxelgrid_create_from_triangle_mesh(
+        out: *mut *mut o3d_voxelgrid_t,
+        mesh: *const o3d_trianglemesh_t,
+        voxel_size: f64,
+    ) -> o3d_status;
+    pub fn o3d_voxelgrid_destroy(grid: *mut o3d_voxelgrid_t);
+    pub fn o3d_voxelgrid_get_voxel_size(grid: *const o3d_voxelgrid_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_voxelgrid_get_origin(grid: *const o3d_voxelgrid_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_voxelgrid_num_voxels(grid: *const o3d_voxelgrid_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_voxelgrid_get_voxels(
+        grid: *const o3d_voxelgrid_t,
+        out_grid_index: *mut i32,
+        out_colors: *mut f64,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+    pub fn o3d_voxelgrid_get_voxel(grid: *const o3d_voxelgrid_t, point: *const f64, out_index: *mut i32) -> o3d_status;
+    pub fn o3d_voxelgrid_check_if_included(
+        grid: *const o3d_voxelgrid_t,
+        xyz: *const f64,
+        n: usize,
+        out_included: *mut i32,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// octree.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque octree (`o3d_octree_t`).
+#[repr(C)]
+pub struct o3d_octree {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_octree_t = o3d_octree;
+
+/// Where an octree node sits (`o3d_octree_node_info_t`, frozen layout).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct o3d_octree_node_info {
+    pub origin: [f64; 3],
+    pub size: f64,
+    pub depth: i32,
+    pub child_index: i32,
+}
+pub type o3d_octree_node_info_t = o3d_octree_node_info;
+
+extern "C" {
+    pub fn o3d_octree_create(out: *mut *mut o3d_octree_t, max_depth: i32) -> o3d_status;
+    pub fn o3d_octree_destroy(octree: *mut o3d_octree_t);
+    pub fn o3d_octree_convert_from_point_cloud(
+        octree: *mut o3d_octree_t,
+        pc: *const o3d_pointcloud_t,
+        size_expand: f64,
+    ) -> o3d_status;
+    pub fn o3d_octree_get_root(
+        octree: *const o3d_octree_t,
+        out_origin: *mut f64,
+        out_size: *mut f64,
+        out_max_depth: *mut i32,
+    ) -> o3d_status;
+    pub fn o3d_octree_num_leaf_nodes(octree: *const o3d_octree_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_octree_locate_leaf_node(
+        octree: *const o3d_octree_t,
+        point: *const f64,
+        out_found: *mut i32,
+        out_info: *mut o3d_octree_node_info_t,
+        out_color: *mut f64,
+        out_indices: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
 }

@@ -1,7 +1,8 @@
 //! Safe Rust bindings for **o3d**, a library for 3D data processing (an Open3D replacement).
 //!
 //! Built only on the C API (`o3d-sys`, `libo3d.so.0`). Names follow Open3D:
-//! [`PointCloud`] (`o3d.geometry.PointCloud`), [`TriangleMesh`], [`Image`], [`RgbdImage`],
+//! [`PointCloud`] (`o3d.geometry.PointCloud`), [`TriangleMesh`], [`LineSet`], [`VoxelGrid`],
+//! [`Octree`], [`OrientedBoundingBox`], [`Image`], [`RgbdImage`],
 //! [`PinholeIntrinsic`] (`o3d.camera.PinholeCameraIntrinsic`), [`KDTreeFlann`],
 //! [`io::read_point_cloud`], [`io::read_triangle_mesh`], [`registration::registration_icp`].
 //!
@@ -30,29 +31,39 @@ use std::sync::{Arc, RwLock};
 
 pub use o3d_sys as sys;
 
+mod boundingbox;
 pub mod camera;
 mod error;
+mod hull;
 mod image;
 pub mod io;
 mod io_geometry;
 mod kdtree;
+mod lineset;
+mod octree;
 mod panic;
 mod pointcloud;
+mod pointcloud_covariances;
 pub mod registration;
 mod rgbd;
 mod trianglemesh;
 mod trianglemesh_ops;
 mod trianglemesh_primitives;
 mod util;
+mod voxelgrid;
 
+pub use boundingbox::OrientedBoundingBox;
 pub use camera::{CameraTrajectory, IntrinsicPreset, PinholeCameraParameters, PinholeIntrinsic};
 pub use error::{Error, ErrorCode, Result};
 pub use image::{ConvertType, Image, ImageFilter, PixelType};
 pub use kdtree::{KDTreeFlann, SearchResult, SearchResultRef};
+pub use lineset::LineSet;
+pub use octree::{Octree, OctreeLeaf, OctreeNodeInfo};
 pub use pointcloud::{PointCloud, SearchParam};
 pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
 pub use trianglemesh::{MeshArray, TriangleMesh};
 pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
+pub use voxelgrid::{Voxel, VoxelGrid};
 
 use error::check;
 

@@ -155,7 +155,7 @@ impl PointCloud {
         self.raw.as_ptr()
     }
 
-    fn raw_mut(&mut self) -> *mut sys::o3d_pointcloud_t {
+    pub(crate) fn raw_mut(&mut self) -> *mut sys::o3d_pointcloud_t {
         self.raw.as_ptr()
     }
 

@@ -65,6 +65,18 @@ public abstract class NativeResource implements AutoCloseable {
         return length / 3;
     }
 
+    /** A read-only direct ByteBuffer (native order) over a borrowed o3d view; empty for address 0. */
+    static java.nio.ByteBuffer readOnlyView(long address, long bytes) {
+        java.nio.ByteBuffer b = O3dNative.o3dj_direct_buffer(address, bytes);
+        if (b == null) b = java.nio.ByteBuffer.allocateDirect(0);
+        return b.asReadOnlyBuffer().order(java.nio.ByteOrder.nativeOrder());
+    }
+
+    /** {@code values} cut to the {@code n} items a copy-out call reported. */
+    static int[] trimTo(int[] values, long n) {
+        return n >= values.length ? values : java.util.Arrays.copyOf(values, (int) n);
+    }
+
     static double[] fixed(double[] values, int length, String name, boolean nullable) {
         if (values == null) {
             if (nullable) return null;

@@ -37,7 +37,7 @@ public final class PointCloud extends NativeResource {
         }
     }
 
-    private static PointCloud wrap(long[] h) {
+    static PointCloud wrap(long[] h) {
         return new PointCloud(h[0]);
     }
 
@@ -508,4 +508,121 @@ public final class PointCloud extends NativeResource {
     public static PointCloud createFromRGBDImage(RGBDImage image, PinholeCameraIntrinsic intrinsic) {
         return createFromRGBDImage(image, intrinsic, null, true);
     }
+
+    // ---- oriented boxes, convex hull, hidden-point removal ----------------------------------------
+
+    /** Oriented box of the points (get_oriented_bounding_box); robust joggles degenerate sets. */
+    public OrientedBoundingBox getOrientedBoundingBox(boolean robust) {
+        o3d_obb_t b = new o3d_obb_t();
+        try {
+            O3dNative.o3d_pointcloud_get_oriented_bounding_box(handle(), robust ? 1 : 0, b);
+            Reference.reachabilityFence(this);
+            return OrientedBoundingBox.fromNative(b);
+        } finally {
+            b.delete();
+        }
+    }
+
+    public OrientedBoundingBox getOrientedBoundingBox() { return getOrientedBoundingBox(false); }
+
+    /** New cloud with the points inside {@code box} (outside when {@code invert}) (crop). */
+    public PointCloud crop(OrientedBoundingBox box, boolean invert) {
+        java.util.Objects.requireNonNull(box, "box");
+        long[] h = new long[1];
+        o3d_obb_t b = box.toNative();
+        try {
+            O3dNative.o3d_pointcloud_crop_obb(h, handle(), b, invert ? 1 : 0);
+        } finally {
+            b.delete();
+        }
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    public PointCloud crop(OrientedBoundingBox box) { return crop(box, false); }
+
+    /**
+     * Convex hull of the points through Qhull (compute_convex_hull): at least 4 points, not coplanar
+     * unless {@code joggleInputs}.
+     */
+    public ConvexHullResult computeConvexHull(boolean joggleInputs) {
+        int cap = capacity();
+        int[] indices = new int[cap];
+        long[] h = new long[1];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_compute_convex_hull(h, handle(), joggleInputs ? 1 : 0, indices, cap, n);
+        Reference.reachabilityFence(this);
+        return new ConvexHullResult(TriangleMesh.wrap(h), trim(indices, n[0]));
+    }
+
+    public ConvexHullResult computeConvexHull() { return computeConvexHull(false); }
+
+    /**
+     * The points visible from {@code cameraLocation} (hidden_point_removal, Katz et al. 2007): the hull
+     * mesh and the indices of the visible points. A larger {@code radius} keeps more points.
+     */
+    public ConvexHullResult hiddenPointRemoval(double[] cameraLocation, double radius) {
+        double[] cam = fixed(cameraLocation, 3, "cameraLocation", false);
+        int cap = capacity() + 1;
+        int[] indices = new int[cap];
+        long[] h = new long[1];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_hidden_point_removal(h, handle(), cam, radius, indices, cap, n);
+        Reference.reachabilityFence(this);
+        return new ConvexHullResult(TriangleMesh.wrap(h), trim(indices, n[0]));
+    }
+
+    // ---- per-point covariances ----------------------------------------------------------------------
+
+    /** True when the cloud has one covariance per point. */
+    public boolean hasCovariances() {
+        int[] v = new int[1];
+        O3dNative.o3d_pointcloud_has_covariances(handle(), v);
+        Reference.reachabilityFence(this);
+        return v[0] != 0;
+    }
+
+    /** Covariances: N row-major 3x3 matrices, 9N values (a copy). */
+    public double[] getCovariances() {
+        long h = handle();
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_get_covariances(h, null, 0, n);
+        if (n[0] * 9 > Integer.MAX_VALUE - 8) throw new IllegalStateException("cloud too large for a Java array");
+        double[] out = new double[(int) (n[0] * 9)];
+        O3dNative.o3d_pointcloud_get_covariances(h, out, n[0], n);
+        Reference.reachabilityFence(this);
+        return out;
+    }
+
+    /** Replace the covariances (9 values per point, copied once). */
+    public void setCovariances(double[] covariances) {
+        java.util.Objects.requireNonNull(covariances, "covariances");
+        if (covariances.length % 9 != 0)
+            throw new IllegalArgumentException("covariances: length " + covariances.length + " is not a multiple of 9");
+        O3dNative.o3d_pointcloud_set_covariances(handle(), covariances, covariances.length / 9);
+        Reference.reachabilityFence(this);
+    }
+
+    /** Borrowed read-only view of the covariances (rows x 9 doubles), valid as the other views. */
+    public ByteBuffer covariancesView() {
+        long[] data = new long[1];
+        long[] n = new long[1];
+        O3dNative.o3d_pointcloud_covariances_view(handle(), data, n);
+        Reference.reachabilityFence(this);
+        return readOnlyView(data[0], n[0] * 9 * Double.BYTES);
+    }
+
+    /** Covariance of each point's neighbourhood (estimate_covariances; null param: KNN 30). */
+    public PointCloud estimateCovariances(SearchParam param) {
+        o3d_search_param_t p = param != null ? param.toNative() : null;
+        try {
+            O3dNative.o3d_pointcloud_estimate_covariances(handle(), p);
+        } finally {
+            if (p != null) p.delete();
+        }
+        Reference.reachabilityFence(this);
+        return this;
+    }
+
+    public PointCloud estimateCovariances() { return estimateCovariances(null); }
 }

@@ -540,4 +540,47 @@ public final class TriangleMesh extends NativeResource {
     public static TriangleMesh createIcosahedron(double radius) {
         return TriangleMeshOps.make(out -> O3dNative.o3d_trianglemesh_create_icosahedron(out, radius));
     }
+
+    // ---- oriented boxes and convex hull ----------------------------------------------------------
+
+    /** Oriented box of the vertices (get_oriented_bounding_box). */
+    public OrientedBoundingBox getOrientedBoundingBox(boolean robust) {
+        o3d_obb_t b = new o3d_obb_t();
+        try {
+            O3dNative.o3d_trianglemesh_get_oriented_bounding_box(handle(), robust ? 1 : 0, b);
+            Reference.reachabilityFence(this);
+            return OrientedBoundingBox.fromNative(b);
+        } finally {
+            b.delete();
+        }
+    }
+
+    public OrientedBoundingBox getOrientedBoundingBox() { return getOrientedBoundingBox(false); }
+
+    /** New mesh of the triangles whose three vertices lie inside {@code box} (crop). */
+    public TriangleMesh crop(OrientedBoundingBox box) {
+        Objects.requireNonNull(box, "box");
+        long[] h = new long[1];
+        o3d_obb_t b = box.toNative();
+        try {
+            O3dNative.o3d_trianglemesh_crop_obb(h, handle(), b);
+        } finally {
+            b.delete();
+        }
+        Reference.reachabilityFence(this);
+        return wrap(h);
+    }
+
+    /** Convex hull of the vertices (compute_convex_hull). */
+    public ConvexHullResult computeConvexHull(boolean joggleInputs) {
+        int cap = Math.toIntExact(numVertices());
+        int[] indices = new int[cap];
+        long[] h = new long[1];
+        long[] n = new long[1];
+        O3dNative.o3d_trianglemesh_compute_convex_hull(h, handle(), joggleInputs ? 1 : 0, indices, cap, n);
+        Reference.reachabilityFence(this);
+        return new ConvexHullResult(wrap(h), trimTo(indices, n[0]));
+    }
+
+    public ConvexHullResult computeConvexHull() { return computeConvexHull(false); }
 }

@@ -1,0 +1,163 @@
+//! `Octree` (o3d.geometry.Octree with point-and-color leaves) over a point cloud.
+use std::fmt;
+use std::ptr::{self, NonNull};
+
+use o3d_sys as sys;
+
+use crate::error::{check, Result};
+use crate::pointcloud::PointCloud;
+use crate::util::{adopt, to_i32};
+
+/// Where a node sits (o3d.geometry.OctreeNodeInfo).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct OctreeNodeInfo {
+    /// The node cube's min corner.
+    pub origin: [f64; 3],
+    /// The node cube's edge.
+    pub size: f64,
+    /// 0 for the root.
+    pub depth: i32,
+    /// 0..7 within its parent (0 for the root).
+    pub child_index: i32,
+}
+
+impl OctreeNodeInfo {
+    fn from_raw(raw: sys::o3d_octree_node_info_t) -> OctreeNodeInfo {
+        OctreeNodeInfo { origin: raw.origin, size: raw.size, depth: raw.depth, child_index: raw.child_index }
+    }
+}
+
+/// A leaf found by [`Octree::locate_leaf_node`]: where it is, the mean color of its points and
+/// their indices (ascending).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct OctreeLeaf {
+    /// The leaf's position in the tree.
+    pub info: OctreeNodeInfo,
+    /// Mean color of the leaf's points.
+    pub color: [f64; 3],
+    /// Indices of the leaf's points in the cloud the tree was built from.
+    pub indices: Vec<i32>,
+}
+
+/// An octree: a cube of edge `size` at `origin`, split down to `max_depth`.
+///
+/// Owns an `o3d_octree_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and
+/// rebuilding takes `&mut self`.
+pub struct Octree {
+    raw: NonNull<sys::o3d_octree_t>,
+}
+
+// SAFETY: see the type's documentation.
+unsafe impl Send for Octree {}
+unsafe impl Sync for Octree {}
+
+impl Octree {
+    /// A new empty octree of depth `max_depth` (>= 1).
+    pub fn new(max_depth: usize) -> Result<Octree> {
+        let depth = to_i32(max_depth, "max_depth")?;
+        // SAFETY: out-pointer.
+        adopt("octree", |out| unsafe { sys::o3d_octree_create(out, depth) }, |raw| Octree { raw })
+    }
+
+    /// Take ownership of a raw handle.
+    ///
+    /// # Safety
+    /// `raw` must be a valid octree handle owned by the caller; it is destroyed on drop.
+    pub unsafe fn from_raw(raw: NonNull<sys::o3d_octree_t>) -> Octree {
+        Octree { raw }
+    }
+
+    /// The raw handle, still owned by `self`.
+    pub fn as_raw(&self) -> *const sys::o3d_octree_t {
+        self.raw.as_ptr()
+    }
+
+    /// Rebuild from `cloud`: the root is the cloud's bounding cube enlarged by `size_expand`
+    /// (a fraction >= 0; Open3D's default is 0.01), every point inserted.
+    pub fn convert_from_point_cloud(&mut self, cloud: &PointCloud, size_expand: f64) -> Result<&mut Self> {
+        // SAFETY: valid handles; `self` exclusively borrowed.
+        check(unsafe { sys::o3d_octree_convert_from_point_cloud(self.raw.as_ptr(), cloud.as_raw(), size_expand) })?;
+        Ok(self)
+    }
+
+    /// The root cube's min corner.
+    pub fn origin(&self) -> Result<[f64; 3]> {
+        let mut v = [0.0; 3];
+        // SAFETY: room for 3 doubles; the other outputs are skipped.
+        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), v.as_mut_ptr(), ptr::null_mut(), ptr::null_mut()) })?;
+        Ok(v)
+    }
+
+    /// The root cube's edge.
+    pub fn size(&self) -> Result<f64> {
+        let mut v = 0.0;
+        // SAFETY: one double; the other outputs are skipped.
+        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), ptr::null_mut(), &mut v, ptr::null_mut()) })?;
+        Ok(v)
+    }
+
+    /// The depth of the leaves.
+    pub fn max_depth(&self) -> Result<usize> {
+        let mut v = 0i32;
+        // SAFETY: one int; the other outputs are skipped.
+        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), ptr::null_mut(), ptr::null_mut(), &mut v) })?;
+        Ok(v.max(0) as usize)
+    }
+
+    /// Number of non-empty leaves.
+    pub fn num_leaf_nodes(&self) -> Result<usize> {
+        let mut n = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { sys::o3d_octree_num_leaf_nodes(self.as_raw(), &mut n) })?;
+        Ok(n)
+    }
+
+    /// The leaf containing `point`; `None` when the point is outside the root or in an empty cell.
+    pub fn locate_leaf_node(&self, point: [f64; 3]) -> Result<Option<OctreeLeaf>> {
+        let locate = |indices: &mut [i32], info: &mut sys::o3d_octree_node_info_t, color: &mut [f64; 3]| {
+            let (mut found, mut n) = (0i32, 0usize);
+            let out = if indices.is_empty() { ptr::null_mut() } else { indices.as_mut_ptr() };
+            // SAFETY: 3 doubles in; writable struct and 3 doubles out; `out` has room for
+            // indices.len() ints or is NULL.
+            check(unsafe {
+                sys::o3d_octree_locate_leaf_node(
+                    self.as_raw(),
+                    point.as_ptr(),
+                    &mut found,
+                    info,
+                    color.as_mut_ptr(),
+                    out,
+                    indices.len(),
+                    &mut n,
+                )
+            })?;
+            Ok::<_, crate::Error>((found != 0, n))
+        };
+        let mut info = sys::o3d_octree_node_info_t::default();
+        let mut color = [0.0; 3];
+        let (found, n) = locate(&mut [], &mut info, &mut color)?;
+        if !found {
+            return Ok(None);
+        }
+        let mut indices = vec![0i32; n];
+        let (_, written) = locate(&mut indices, &mut info, &mut color)?;
+        indices.truncate(written.min(n));
+        Ok(Some(OctreeLeaf { info: OctreeNodeInfo::from_raw(info), color, indices }))
+    }
+}
+
+impl Drop for Octree {
+    fn drop(&mut self) {
+        // SAFETY: owned handle, destroyed once.
+        unsafe { sys::o3d_octree_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for Octree {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Octree")
+            .field("max_depth", &self.max_depth().unwrap_or(0))
+            .field("leaves", &self.num_leaf_nodes().unwrap_or(0))
+            .finish()
+    }
+}

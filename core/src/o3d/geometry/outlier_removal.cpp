@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "o3d/geometry/self_knn_distances.h"
 #include "o3d/kdtree/kd_tree.h"
 #include "o3d/utility/error.h"
 
@@ -16,20 +17,11 @@ std::vector<int64_t> statistical_outlier_indices(const PointCloud& cloud, int nb
     if (!std::isfinite(std_ratio) || std_ratio <= 0.0)
         throw InvalidArgument("std_ratio must be finite and > 0, got " + std::to_string(std_ratio));
     if (cloud.points.empty()) throw InvalidArgument("point cloud is empty");
-    const kdtree::KDTree tree(cloud.points);
-    const kdtree::SearchResult res =
-        tree.search_batch(cloud.points, kdtree::SearchParam::make_knn(nb_neighbors), num_threads);
     const size_t n = cloud.points.size();
-    std::vector<double> avg(n, -1.0);
+    const std::vector<double> avg = mean_self_knn_distances(cloud.points, nb_neighbors, num_threads);
     size_t valid = 0;
-    for (size_t i = 0; i < n; ++i) {
-        const int64_t b = res.offsets[i], e = res.offsets[i + 1];
-        if (e == b) continue;
-        ++valid;
-        double sum = 0.0;
-        for (int64_t k = b; k < e; ++k) sum += std::sqrt(res.distances2[k]);
-        avg[i] = sum / static_cast<double>(e - b);
-    }
+    for (double a : avg)
+        if (a >= 0.0) ++valid;
     std::vector<int64_t> kept;
     if (valid == 0) return kept;
     double mean = 0.0;

@@ -106,3 +106,17 @@ TEST(Image, JpegIsCloseAndFilesWork) {
     EXPECT_THROW(o3dpp::write_image_to_memory(Image(2, 2, 1, 4), "png"), o3dpp::Error);
     EXPECT_THROW(o3dpp::read_image_from_memory(std::vector<uint8_t>{0x89, 'P', 'N', 'G', 1, 2}, "png"), o3dpp::Error);
 }
+
+TEST(Image, CreatePyramidHalvesEachLevelAndKeepsAConstant) {
+    const auto img = Image::from_values<float>(8, 4, std::vector<float>(32, 0.5f));
+    const std::vector<Image> levels = img.create_pyramid(3);
+    ASSERT_EQ(levels.size(), 3u);
+    EXPECT_EQ(levels[1].width(), 4);
+    EXPECT_EQ(levels[2].width(), 2);
+    EXPECT_EQ(levels[2].height(), 1);
+    for (const Image& level : levels)
+        for (float v : level.to_values<float>()) EXPECT_EQ(v, 0.5f);
+    const auto ramp = Image::from_values<float>(4, 2, {0, 1, 2, 3, 0, 1, 2, 3});
+    EXPECT_EQ(ramp.create_pyramid(2, false)[1].to_values<float>(), (std::vector<float>{0.5f, 2.5f}));
+    EXPECT_O3D_ERROR(Image(4, 4, 1, 1).create_pyramid(2), O3D_ERROR_INVALID_ARGUMENT);
+}

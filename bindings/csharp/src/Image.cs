@@ -159,6 +159,23 @@ namespace O3d
             return new Image(h);
         }
 
+        /// <summary>Open3D's create_pyramid: level 0 is a copy, each next level the previous one (Gaussian3
+        /// filtered when asked) downsampled by 2. 1-channel float32 input.</summary>
+        public Image[] CreatePyramid(int numOfLevels, bool withGaussianFilter = true)
+        {
+            if (numOfLevels < 0) throw new ArgumentOutOfRangeException(nameof(numOfLevels));
+            if (NumChannels != 1 || BytesPerChannel != 4)
+                throw new InvalidOperationException("CreatePyramid needs a 1-channel float32 image");
+            var levels = new Image[numOfLevels];
+            for (int i = 0; i < numOfLevels; ++i)
+            {
+                if (i == 0) { levels[0] = Clone(); continue; }
+                if (!withGaussianFilter) { levels[i] = levels[i - 1].Downsample(); continue; }
+                using (var smoothed = levels[i - 1].Filter(ImageFilterType.Gaussian3)) levels[i] = smoothed.Downsample();
+            }
+            return levels;
+        }
+
         /// <summary>Half-size 1-channel float32 image (2x2 block means).</summary>
         public Image Downsample() { return Unary(O3dNative.o3d_image_downsample); }
         public Image FlipVertical() { return Unary(O3dNative.o3d_image_flip_vertical); }

@@ -573,6 +573,28 @@ static class Test
 
     static void GeometryTests()
     {
+        Run("image: CreatePyramid halves each level and keeps a constant", () =>
+        {
+            var flat = new float[32];
+            for (int i = 0; i < flat.Length; ++i) flat[i] = 0.5f;
+            using (var img = Image.FromFloat(8, 4, 1, flat))
+            {
+                Image[] levels = img.CreatePyramid(3);
+                Check(levels.Length == 3 && levels[1].Width == 4 && levels[2].Width == 2 && levels[2].Height == 1, "sizes");
+                foreach (var level in levels)
+                {
+                    foreach (float v in level.ToFloatArray()) Check(v == 0.5f, "constant kept");
+                    level.Dispose();
+                }
+            }
+            using (var ramp = Image.FromFloat(4, 2, 1, new float[] { 0, 1, 2, 3, 0, 1, 2, 3 }))
+            {
+                Image[] plain = ramp.CreatePyramid(2, false);
+                float[] half = plain[1].ToFloatArray();
+                Check(half.Length == 2 && half[0] == 0.5f && half[1] == 2.5f, "2x2 means");
+                foreach (var level in plain) level.Dispose();
+            }
+        });
         Run("mesh: create_box area 6, volume 1, 8 vertices, 12 triangles", () =>
         {
             using (var box = TriangleMesh.CreateBox())

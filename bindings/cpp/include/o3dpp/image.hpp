@@ -109,6 +109,20 @@ public:
     Image filter(ImageFilter type) const {
         return adopt([&](o3d_image_t** o) { return o3d_image_filter(o, get(), static_cast<int32_t>(type)); });
     }
+    /// @brief Open3D's create_pyramid: level 0 is a copy, each next level the previous one (Gaussian3
+    /// filtered when asked) downsampled by 2. 1-channel float32 input.
+    std::vector<Image> create_pyramid(int num_of_levels, bool with_gaussian_filter = true) const {
+        if (num_of_levels < 0 || num_channels() != 1 || bytes_per_channel() != 4)
+            throw Error(O3D_ERROR_INVALID_ARGUMENT,
+                        "o3dpp::Image::create_pyramid: needs num_of_levels >= 0 and a 1-channel float32 image");
+        std::vector<Image> levels;
+        if (num_of_levels > 0) levels.push_back(clone());
+        for (int i = 1; i < num_of_levels; ++i) {
+            const Image& prev = levels.back();
+            levels.push_back(with_gaussian_filter ? prev.filter(ImageFilter::Gaussian3).downsample() : prev.downsample());
+        }
+        return levels;
+    }
     /// @brief Half-size float image of 2x2 means.
     Image downsample() const { return adopt([&](o3d_image_t** o) { return o3d_image_downsample(o, get()); }); }
     Image flip_vertical() const { return adopt([&](o3d_image_t** o) { return o3d_image_flip_vertical(o, get()); }); }

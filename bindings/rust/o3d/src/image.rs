@@ -241,6 +241,26 @@ impl Image {
         new_image(|out| unsafe { sys::o3d_image_filter(out, self.as_raw(), filter.raw()) })
     }
 
+    /// Open3D's `create_pyramid`: level 0 is a copy, each next level the previous one (Gaussian3
+    /// filtered when asked) downsampled by 2. 1-channel `f32` input.
+    pub fn create_pyramid(&self, num_of_levels: usize, with_gaussian_filter: bool) -> Result<Vec<Image>> {
+        if self.num_channels()? != 1 || self.bytes_per_channel()? != 4 {
+            return Err(Error::new(ErrorCode::InvalidArgument, "create_pyramid needs a 1-channel float32 image"));
+        }
+        let mut levels: Vec<Image> = Vec::with_capacity(num_of_levels);
+        for i in 0..num_of_levels {
+            let next = if i == 0 {
+                self.try_clone()?
+            } else if with_gaussian_filter {
+                levels[i - 1].filter(ImageFilter::Gaussian3)?.downsample()?
+            } else {
+                levels[i - 1].downsample()?
+            };
+            levels.push(next);
+        }
+        Ok(levels)
+    }
+
     /// Half-size 1-channel `f32` image of 2x2 means.
     pub fn downsample(&self) -> Result<Image> {
         self.derived(sys::o3d_image_downsample)

@@ -166,3 +166,19 @@ fn shared_rgbd_frame_decodes() {
     assert_eq!(depth.pixel_type().unwrap(), PixelType::U16);
     assert_eq!(depth.num_channels().unwrap(), 1);
 }
+
+#[test]
+fn create_pyramid_halves_each_level_and_keeps_a_constant() {
+    let img = Image::from_f32(8, 4, &[0.5f32; 32]).unwrap();
+    let levels = img.create_pyramid(3, true).unwrap();
+    let sizes: Vec<(i32, i32)> = levels.iter().map(|l| (l.width().unwrap(), l.height().unwrap())).collect();
+    assert_eq!(sizes, vec![(8, 4), (4, 2), (2, 1)]);
+    for level in &levels {
+        assert!(level.to_f32_vec().unwrap().iter().all(|&v| v == 0.5));
+    }
+    // Without the filter, level 1 is exactly the 2x2 means of the ramp.
+    let plain = ramp(4, 2).create_pyramid(2, false).unwrap();
+    assert_eq!(plain[1].to_f32_vec().unwrap(), vec![0.5, 2.5]);
+    let gray8 = Image::new(4, 4, 1, PixelType::U8).unwrap();
+    assert_eq!(gray8.create_pyramid(2, true).unwrap_err().code, ErrorCode::InvalidArgument);
+}

@@ -147,6 +147,29 @@ public final class Image extends NativeResource {
         return unary((out, img) -> O3dNative.o3d_image_filter(out, img, filterType.code()));
     }
 
+    /**
+     * Open3D's create_pyramid: level 0 is a copy, each next level the previous one (Gaussian3 filtered when
+     * asked) downsampled by 2. 1-channel float32 input.
+     */
+    public Image[] createPyramid(int numOfLevels, boolean withGaussianFilter) {
+        if (numOfLevels < 0) throw new IllegalArgumentException("numOfLevels must be >= 0");
+        if (numChannels() != 1 || bytesPerChannel() != 4)
+            throw new IllegalStateException("createPyramid needs a 1-channel float32 image");
+        Image[] levels = new Image[numOfLevels];
+        for (int i = 0; i < numOfLevels; ++i) {
+            if (i == 0) {
+                levels[0] = copy();
+            } else if (withGaussianFilter) {
+                try (Image smoothed = levels[i - 1].filter(ImageFilterType.GAUSSIAN3)) {
+                    levels[i] = smoothed.downsample();
+                }
+            } else {
+                levels[i] = levels[i - 1].downsample();
+            }
+        }
+        return levels;
+    }
+
     /** Half-size 1-channel float32 image (2x2 block means). */
     public Image downsample() { return unary(O3dNative::o3d_image_downsample); }
     public Image flipVertical() { return unary(O3dNative::o3d_image_flip_vertical); }

@@ -329,4 +329,26 @@ class ImageCameraTest {
         assertThrows(IllegalStateException.class, image::width);
         assertThrows(IllegalStateException.class, traj::size);
     }
+
+    @Test
+    void createPyramidHalvesEachLevelAndKeepsAConstant() {
+        float[] flat = new float[32];
+        java.util.Arrays.fill(flat, 0.5f);
+        try (Image img = Image.fromFloat(8, 4, 1, flat)) {
+            Image[] levels = img.createPyramid(3, true);
+            assertEquals(3, levels.length);
+            assertEquals(4, levels[1].width());
+            assertEquals(2, levels[2].width());
+            assertEquals(1, levels[2].height());
+            for (Image level : levels) {
+                for (float v : level.toFloatArray()) assertEquals(0.5f, v);
+                level.close();
+            }
+        }
+        try (Image ramp = Image.fromFloat(4, 2, 1, new float[] {0, 1, 2, 3, 0, 1, 2, 3})) {
+            Image[] plain = ramp.createPyramid(2, false);
+            assertArrayEquals(new float[] {0.5f, 2.5f}, plain[1].toFloatArray());
+            for (Image level : plain) level.close();
+        }
+    }
 }

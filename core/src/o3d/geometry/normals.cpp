@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "o3d/geometry/point_cloud_covariances.h"
 #include "o3d/geometry/symmetric_eigen3.h"
 #include "o3d/kdtree/query_order.h"
 #include "o3d/utility/error.h"
@@ -11,20 +12,6 @@
 
 namespace o3d::geometry {
 namespace {
-
-/// @brief Covariance of the listed points, two-pass (mean first): unlike Open3D's raw moments it
-/// does not lose precision on clouds far from the origin.
-Eigen::Matrix3d covariance(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& indices) {
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int i : indices) mean += points[static_cast<size_t>(i)];
-    mean /= static_cast<double>(indices.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int i : indices) {
-        const Eigen::Vector3d d = points[static_cast<size_t>(i)] - mean;
-        cov.noalias() += d * d.transpose();
-    }
-    return cov / static_cast<double>(indices.size());
-}
 
 void require_normals(const PointCloud& cloud) {
     if (!cloud.has_normals()) throw InvalidArgument("the cloud has no normals (call estimate_normals first)");
@@ -62,7 +49,7 @@ void estimate_normals(PointCloud& cloud, const kdtree::KDTree& tree, const kdtre
             const size_t i = order[static_cast<size_t>(s)];
             Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
             if (tree.search(cloud.points[i], param, idx, d2) >= 3) {
-                normal = smallest_eigenvector(covariance(cloud.points, idx));
+                normal = smallest_eigenvector(neighbourhood_covariance(cloud.points, idx));
                 if (normal.squaredNorm() == 0.0) normal = had_normals ? cloud.normals[i] : Eigen::Vector3d::UnitZ();
             }
             if (had_normals && normal.dot(cloud.normals[i]) < 0.0) normal = -normal;

@@ -9,9 +9,7 @@
 #include "o3d/utility/parallel.h"
 
 namespace o3d::geometry {
-namespace {
 
-/// @brief Two-pass covariance (mean first): unlike raw moments it keeps its precision far from the origin.
 Eigen::Matrix3d neighbourhood_covariance(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& indices) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int i : indices) mean += points[static_cast<size_t>(i)];
@@ -23,8 +21,6 @@ Eigen::Matrix3d neighbourhood_covariance(const std::vector<Eigen::Vector3d>& poi
     }
     return cov / static_cast<double>(indices.size());
 }
-
-}  // namespace
 
 void estimate_covariances(PointCloud& cloud, const kdtree::SearchParam& param, int num_threads) {
     const kdtree::KDTree tree(cloud.points);

@@ -94,18 +94,8 @@ std::vector<uint8_t> write_mesh_ply(const geometry::TriangleMesh& mesh, const Me
     std::vector<uint8_t> out = output_buffer(header.size() + n * vrecord + m * frecord);
     std::memcpy(out.data(), header.data(), header.size());
     uint8_t* p = out.data() + header.size();
-    for (size_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) store_le(p + 8 * k, mesh.vertices[i][k]);
-        p += 24;
-        if (normals) {
-            for (int k = 0; k < 3; ++k) store_le(p + 8 * k, mesh.vertex_normals[i][k]);
-            p += 24;
-        }
-        if (colors) {
-            for (int k = 0; k < 3; ++k) p[k] = color_to_u8(mesh.vertex_colors[i][k]);
-            p += 3;
-        }
-    }
+    p = write_ply_vertex_records(p, mesh.vertices, normals ? &mesh.vertex_normals : nullptr,
+                                 colors ? &mesh.vertex_colors : nullptr);
     for (size_t t = 0; t < m; ++t) {
         p[0] = 3;
         for (int k = 0; k < 3; ++k) store_le(p + 1 + 4 * k, static_cast<uint32_t>(mesh.triangles[t][k]));

@@ -69,4 +69,25 @@ struct PlyFaceSink {
 /// to be in [0, INT32_MAX] here, not against the vertex count.
 void read_ply_elements(const Input& in, const PlyVertexSink& vertices, const PlyFaceSink* faces);
 
+/// @brief The binary little-endian vertex records shared by the point-cloud and mesh PLY writers:
+/// x y z as doubles, then nx ny nz as doubles when `normals`, then red green blue as uchar when `colors`
+/// (either may be NULL). Returns the end of what was written.
+inline uint8_t* write_ply_vertex_records(uint8_t* p, const std::vector<Eigen::Vector3d>& xyz,
+                                         const std::vector<Eigen::Vector3d>* normals,
+                                         const std::vector<Eigen::Vector3d>* colors) {
+    for (size_t i = 0; i < xyz.size(); ++i) {
+        for (int k = 0; k < 3; ++k) store_le(p + 8 * k, xyz[i][k]);
+        p += 24;
+        if (normals) {
+            for (int k = 0; k < 3; ++k) store_le(p + 8 * k, (*normals)[i][k]);
+            p += 24;
+        }
+        if (colors) {
+            for (int k = 0; k < 3; ++k) p[k] = color_to_u8((*colors)[i][k]);
+            p += 3;
+        }
+    }
+    return p;
+}
+
 }  // namespace o3d::io::detail

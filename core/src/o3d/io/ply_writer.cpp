@@ -6,6 +6,7 @@
 
 #include "o3d/io/byte_reader.h"
 #include "o3d/io/io_internal.h"
+#include "o3d/io/ply_format.h"
 #include "o3d/io/text_writer.h"
 
 namespace o3d::io::detail {
@@ -51,18 +52,7 @@ std::vector<uint8_t> write_ply(const geometry::PointCloud& cloud, const WriteOpt
     std::vector<uint8_t> out = output_buffer(header.size() + n * record);
     std::memcpy(out.data(), header.data(), header.size());
     uint8_t* p = out.data() + header.size();
-    for (size_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) store_le(p + 8 * k, cloud.points[i][k]);
-        p += 24;
-        if (normals) {
-            for (int k = 0; k < 3; ++k) store_le(p + 8 * k, cloud.normals[i][k]);
-            p += 24;
-        }
-        if (colors) {
-            for (int k = 0; k < 3; ++k) p[k] = color_to_u8(cloud.colors[i][k]);
-            p += 3;
-        }
-    }
+    write_ply_vertex_records(p, cloud.points, normals ? &cloud.normals : nullptr, colors ? &cloud.colors : nullptr);
     return out;
 }
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Replays the committed seed corpus and deterministic mutations of every seed through the
-// point-cloud, triangle-mesh and image readers. Passing means: no crash, no sanitizer report, and no
-// exception but o3d::ParseError. Seeds live in corpus/<format>/ (point clouds), corpus/mesh_<format>/
-// and corpus/image_<format>/. `io_fuzz_replay --write-seeds DIR` regenerates the writer-made seeds.
+// point-cloud, triangle-mesh, image and feature readers. Passing means: no crash, no sanitizer report,
+// and no exception but o3d::ParseError. Seeds live in corpus/<format>/ (point clouds),
+// corpus/mesh_<format>/, corpus/image_<format>/ and corpus/feature_bin/ (Open3D's binary feature files).
+// `io_fuzz_replay --write-seeds DIR` regenerates the writer-made seeds.
 #include <dirent.h>
 #include <sys/stat.h>
 
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "o3d/io/feature_io.h"
 #include "o3d/io/image_io.h"
 #include "o3d/io/point_cloud_io.h"
 #include "o3d/io/triangle_mesh_io.h"
@@ -27,6 +29,7 @@ using Bytes = std::vector<uint8_t>;
 const char* const kFormats[] = {"ply", "pcd", "xyz", "xyzn", "xyzrgb", "pts"};
 const char* const kMeshFormats[] = {"ply", "obj", "stl", "off", "glb", "gltf"};
 const char* const kImageFormats[] = {"png", "jpg", "ppm", "pgm"};
+const char* const kFeatureFormats[] = {"bin"};
 constexpr int kMutationsPerSeed = 3000;
 
 struct Rng {
@@ -129,6 +132,14 @@ void read_image(const Bytes& b, const char* format) {
     const auto back = o3d::io::read_image_from_memory(again.data(), again.size(), out);
     if (back.width != image.width || back.height != image.height || back.num_channels != image.num_channels)
         throw std::runtime_error("re-reading the written image changed its shape");
+}
+
+/// @brief Read `b` as a feature file, write it back and re-read it.
+void read_feature(const Bytes& b, const char*) {
+    const auto feature = o3d::io::read_feature_from_memory(b.data(), b.size());
+    const auto again = o3d::io::write_feature_to_memory(feature);
+    if (o3d::io::read_feature_from_memory(again.data(), again.size()).data != feature.data)
+        throw std::runtime_error("re-reading the written feature changed it");
 }
 
 using Reader = void (*)(const Bytes&, const char*);
@@ -259,6 +270,12 @@ int write_seeds(const std::string& dir) {
         save(dir, std::string("image_") + im.format,
              "written_" + std::to_string(im.channels) + "x" + std::to_string(8 * im.bytes) + "." + im.format,
              o3d::io::write_image_to_memory(tiny_image(im.channels, im.bytes), im.format));
+    for (const int num : {0, 2, 5}) {
+        o3d::registration::Feature f;
+        f.data.resize(3, num);
+        for (int i = 0; i < 3 * num; ++i) f.data(i % 3, i / 3) = 0.5 * i - 1.0;
+        save(dir, "feature_bin", "written_3x" + std::to_string(num) + ".bin", o3d::io::write_feature_to_memory(f));
+    }
     return 0;
 }
 
@@ -302,10 +319,13 @@ int main(int argc, char** argv) {
     const size_t mesh_seeds = seeds - cloud_seeds;
     replay(root, "image_", kImageFormats, read_image, seeds, inputs);
     const size_t image_seeds = seeds - cloud_seeds - mesh_seeds;
-    std::printf("%zu seeds (%zu clouds, %zu meshes, %zu images), %zu mutated inputs, %d failures\n", seeds,
-                cloud_seeds, mesh_seeds, image_seeds, inputs, failures);
-    if (cloud_seeds < 6 || mesh_seeds < 6 || image_seeds < 4) {
-        std::fprintf(stderr, "FAIL: expected seeds under %s/<format>/, mesh_<format>/ and image_<format>/\n",
+    replay(root, "feature_", kFeatureFormats, read_feature, seeds, inputs);
+    const size_t feature_seeds = seeds - cloud_seeds - mesh_seeds - image_seeds;
+    std::printf("%zu seeds (%zu clouds, %zu meshes, %zu images, %zu features), %zu mutated inputs, %d failures\n",
+                seeds, cloud_seeds, mesh_seeds, image_seeds, feature_seeds, inputs, failures);
+    if (cloud_seeds < 6 || mesh_seeds < 6 || image_seeds < 4 || feature_seeds < 2) {
+        std::fprintf(stderr,
+                     "FAIL: expected seeds under %s/<format>/, mesh_<format>/, image_<format>/ and feature_bin/\n",
                      root.c_str());
         return 1;
     }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <type_traits>
 #include <vector>
 
 #include "o3d/kdtree/kd_tree.h"
@@ -53,7 +54,8 @@ struct PassTotals {
 };
 
 /// @brief Move every source point by `transform`, pair it with its nearest target point within
-/// `max_distance`, and call `visit(sums, moved_point, target_index)` for each pair found.
+/// `max_distance`, and call `visit(sums, moved_point, target_index)` for each pair found, or
+/// `visit(sums, moved_point, target_index, source_index)` when the visitor takes the source index too.
 /// Non-finite source points never pair (they still count in the fitness denominator, as in Open3D).
 /// Each block is summed serially; blocks are combined in index order on the calling thread.
 template <typename Sums, typename Visit>
@@ -94,7 +96,10 @@ PassTotals<Sums> correspondence_pass(const std::vector<Eigen::Vector3d>& source,
                 if (index < 0) continue;
                 ++block.count;
                 block.error2 += distance2;
-                visit(block.sums, moved, index);
+                if constexpr (std::is_invocable_v<const Visit&, Sums&, const Eigen::Vector3d&, int, int64_t>)
+                    visit(block.sums, moved, index, i);
+                else
+                    visit(block.sums, moved, index);
             }
         } catch (...) {
 #pragma omp critical(o3d_registration_pass_error)

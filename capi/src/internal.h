@@ -21,6 +21,8 @@
 #include "o3d/geometry/triangle_mesh.h"
 #include "o3d/geometry/voxel_grid.h"
 #include "o3d/kdtree/kd_tree.h"
+#include "o3d/registration/feature.h"
+#include "o3d/registration/registration_result.h"
 #include "o3d/utility/error.h"
 
 struct o3d_pointcloud {
@@ -53,6 +55,14 @@ struct o3d_voxelgrid {
 
 struct o3d_octree {
     o3d::geometry::Octree octree;
+};
+
+struct o3d_registration_result {
+    o3d::registration::RegistrationResult result;
+};
+
+struct o3d_feature {
+    o3d::registration::Feature feature;
 };
 
 struct o3d_buffer {
@@ -161,5 +171,8 @@ void require_finite(double x, const char* name);
 o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
 /// @brief Validate a per-call thread count (0 = library default, negative is invalid).
 int to_num_threads(int32_t num_threads);
+/// @brief A row-major 4x4 (16 doubles) as a matrix; NULL means identity. Non-finite entries are
+/// rejected with InvalidArgument naming `name`. (Defined in registration_global.cpp.)
+Eigen::Matrix4d read_transform(const double* m, const char* name);
 
 }  // namespace o3d::capi

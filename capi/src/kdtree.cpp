@@ -1,15 +1,22 @@
 // SPDX-License-Identifier: MIT
-// C API: kdtree.h over o3d::kdtree::KDTree.
+// C API: kdtree.h over o3d::kdtree::KDTree, and feature.h's trees of any dimension over KDTreeXd.
 #include <Eigen/Core>
+#include <cstdint>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "internal.h"
+#include "o3d/feature.h"
 #include "o3d/kdtree.h"
 #include "o3d/kdtree/kd_tree.h"
+#include "o3d/kdtree/kd_tree_xd.h"
 
+/// Exactly one tree is set: the 3-D one (clouds, and any 3-D points) or one of another dimension.
+/// Each owns a copy of its points, so the handle is independent of what it was built from.
 struct o3d_kdtree {
-    std::unique_ptr<const o3d::kdtree::KDTree> tree;  // owns a copy of its points: independent of any cloud
+    std::unique_ptr<const o3d::kdtree::KDTree> tree;
+    std::unique_ptr<const o3d::kdtree::KDTreeXd> tree_xd;
 };
 
 struct o3d_search_result {
@@ -37,7 +44,28 @@ void give(o3d_kdtree_t** out, std::vector<Eigen::Vector3d> points) {
     *out = handle.release();
 }
 
-const o3d::kdtree::KDTree& tree_of(const o3d_kdtree_t* tree) { return *require(tree, "tree")->tree; }
+/// @brief A tree over the columns of `points` (dimension x n): the 3-D tree when dimension is 3.
+void give_xd(o3d_kdtree_t** out, const Eigen::Ref<const Eigen::MatrixXd>& points) {
+    if (points.rows() == 3) {
+        std::vector<Eigen::Vector3d> rows(static_cast<size_t>(points.cols()));
+        for (size_t i = 0; i < rows.size(); ++i) rows[i] = points.col(static_cast<Eigen::Index>(i));
+        give(out, std::move(rows));
+        return;
+    }
+    if (points.rows() == 0) throw o3d::InvalidArgument("a KD-tree needs points of dimension >= 1");
+    auto handle = std::make_unique<o3d_kdtree>();
+    handle->tree_xd = std::make_unique<const o3d::kdtree::KDTreeXd>(Eigen::MatrixXd(points));
+    *out = handle.release();
+}
+
+/// @brief The 3-D tree; a tree of another dimension is an error here (it needs o3d_kdtree_search_xd).
+const o3d::kdtree::KDTree& tree_of(const o3d_kdtree_t* tree) {
+    const o3d_kdtree& t = *require(tree, "tree");
+    if (!t.tree)
+        throw o3d::InvalidArgument("the tree indexes " + std::to_string(t.tree_xd->dimension()) +
+                                   "-D points; search it with o3d_kdtree_search_xd");
+    return *t.tree;
+}
 const o3d::kdtree::SearchResult& result_of(const o3d_search_result_t* r) { return require(r, "result")->result; }
 
 template <typename T>
@@ -84,8 +112,61 @@ O3D_API void o3d_kdtree_destroy(o3d_kdtree_t* tree) { delete tree; }
 
 O3D_API o3d_status o3d_kdtree_size(const o3d_kdtree_t* tree, size_t* out_n) {
     return guard(__func__, [&] {
-        const auto& t = tree_of(tree);
-        *require(out_n, "out_n") = t.size();
+        const o3d_kdtree& t = *require(tree, "tree");
+        *require(out_n, "out_n") = t.tree ? t.tree->size() : t.tree_xd->size();
+    });
+}
+
+O3D_API o3d_status o3d_kdtree_create_from_feature(o3d_kdtree_t** out, const o3d_feature_t* feature) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        give_xd(out, require(feature, "feature")->feature.data);
+    });
+}
+
+O3D_API o3d_status o3d_kdtree_create_from_points_xd(o3d_kdtree_t** out, const double* data, size_t dimension,
+                                                    size_t n) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        if (dimension == 0) throw o3d::InvalidArgument("dimension must be >= 1");
+        if (n > 0 && !data) throw o3d::InvalidArgument("data is NULL but n = " + std::to_string(n));
+        if (n > static_cast<size_t>(PTRDIFF_MAX) / sizeof(double) / dimension) throw std::bad_alloc();
+        // n rows of `dimension` doubles are the columns of a column-major dimension x n matrix.
+        static const double kNone = 0.0;
+        give_xd(out, Eigen::Map<const Eigen::MatrixXd>(n ? data : &kNone, static_cast<Eigen::Index>(dimension),
+                                                       static_cast<Eigen::Index>(n)));
+    });
+}
+
+O3D_API o3d_status o3d_kdtree_dimension(const o3d_kdtree_t* tree, size_t* out) {
+    return guard(__func__, [&] {
+        const o3d_kdtree& t = *require(tree, "tree");
+        *require(out, "out") = t.tree ? 3 : t.tree_xd->dimension();
+    });
+}
+
+O3D_API o3d_status o3d_kdtree_search_xd(const o3d_kdtree_t* tree, const double* queries, size_t num_queries,
+                                        size_t dimension, const o3d_search_param_t* param, int32_t num_threads,
+                                        o3d_search_result_t** out) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        const o3d_kdtree& t = *require(tree, "tree");
+        const size_t tree_dimension = t.tree ? 3 : t.tree_xd->dimension();
+        if (dimension != tree_dimension)
+            throw o3d::InvalidArgument("queries have dimension " + std::to_string(dimension) +
+                                       " but the tree indexes " + std::to_string(tree_dimension) + "-D points");
+        if (t.tree) {
+            search(tree, queries, num_queries, param, num_threads, out);
+            return;
+        }
+        const auto search_param = o3d::capi::to_search_param(param);
+        const int threads = o3d::capi::to_num_threads(num_threads);
+        auto handle = std::make_unique<o3d_search_result>();
+        handle->result = t.tree_xd->search_batch(queries, num_queries, search_param, threads);
+        *out = handle.release();
     });
 }
 

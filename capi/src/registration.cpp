@@ -9,10 +9,7 @@
 #include "o3d/registration/evaluation.h"
 #include "o3d/registration/icp.h"
 #include "o3d/registration/information_matrix.h"
-
-struct o3d_registration_result {
-    o3d::registration::RegistrationResult result;
-};
+#include "o3d/registration/robust_kernel.h"
 
 namespace {
 
@@ -20,7 +17,26 @@ namespace reg = o3d::registration;
 
 const o3d_icp_options_t kIcpDefaults = {
     sizeof(o3d_icp_options_t), O3D_ESTIMATION_POINT_TO_POINT, 0, 1e-6, 1e-6, 30, 0, nullptr, nullptr,
+    O3D_KERNEL_L2, 1.0, 0.968, 1e-3,
 };
+
+/// O3D_KERNEL_* and its k -> core kernel, validated (k must be finite and > 0 where the kernel reads it).
+reg::RobustKernel to_kernel(int32_t kernel, double k, const char* name) {
+    reg::RobustKernel out;
+    out.k = k;
+    switch (kernel) {
+        case O3D_KERNEL_L2: out.type = reg::RobustKernelType::L2; break;
+        case O3D_KERNEL_L1: out.type = reg::RobustKernelType::L1; break;
+        case O3D_KERNEL_HUBER: out.type = reg::RobustKernelType::Huber; break;
+        case O3D_KERNEL_CAUCHY: out.type = reg::RobustKernelType::Cauchy; break;
+        case O3D_KERNEL_GM: out.type = reg::RobustKernelType::GM; break;
+        case O3D_KERNEL_TUKEY: out.type = reg::RobustKernelType::Tukey; break;
+        default:
+            throw o3d::InvalidArgument(std::string(name) + " " + std::to_string(kernel) + " is not an O3D_KERNEL_*");
+    }
+    reg::check_robust_kernel(out);
+    return out;
+}
 
 /// Row-major 16 doubles -> 4x4; NULL means identity.
 Eigen::Matrix4d read_transform(const double* m, const char* name) {
@@ -37,12 +53,24 @@ Eigen::Matrix4d read_transform(const double* m, const char* name) {
 
 reg::IcpOptions to_core(const o3d_icp_options_t& o) {
     reg::IcpOptions out;
-    if (o.estimation == O3D_ESTIMATION_POINT_TO_POINT)
-        out.estimation = reg::Estimation::PointToPoint;
-    else if (o.estimation == O3D_ESTIMATION_POINT_TO_PLANE)
-        out.estimation = reg::Estimation::PointToPlane;
-    else
-        throw o3d::InvalidArgument("opts.estimation " + std::to_string(o.estimation) + " is not an O3D_ESTIMATION_*");
+    switch (o.estimation) {
+        case O3D_ESTIMATION_POINT_TO_POINT: out.estimation = reg::Estimation::PointToPoint; break;
+        case O3D_ESTIMATION_POINT_TO_PLANE: out.estimation = reg::Estimation::PointToPlane; break;
+        case O3D_ESTIMATION_COLORED: out.estimation = reg::Estimation::Colored; break;
+        case O3D_ESTIMATION_GENERALIZED: out.estimation = reg::Estimation::Generalized; break;
+        case O3D_ESTIMATION_SYMMETRIC: out.estimation = reg::Estimation::Symmetric; break;
+        default:
+            throw o3d::InvalidArgument("opts.estimation " + std::to_string(o.estimation) +
+                                       " is not an O3D_ESTIMATION_*");
+    }
+    out.kernel = to_kernel(o.kernel, o.kernel_k, "opts.kernel");
+    if (!(o.lambda_geometric >= 0.0 && o.lambda_geometric <= 1.0))
+        throw o3d::InvalidArgument("opts.lambda_geometric must be in [0, 1], got " +
+                                   std::to_string(o.lambda_geometric));
+    if (!(std::isfinite(o.epsilon) && o.epsilon > 0.0))
+        throw o3d::InvalidArgument("opts.epsilon must be finite and > 0, got " + std::to_string(o.epsilon));
+    out.lambda_geometric = o.lambda_geometric;
+    out.epsilon = o.epsilon;
     out.with_scaling = o.with_scaling != 0;
     out.criteria.relative_fitness = o.relative_fitness;
     out.criteria.relative_rmse = o.relative_rmse;
@@ -68,6 +96,15 @@ extern "C" {
 
 O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct_size) {
     return o3d::capi::guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kIcpDefaults, "opts"); });
+}
+
+O3D_API o3d_status o3d_robust_kernel_weight(int32_t kernel, double k, double residual, double* out) {
+    return o3d::capi::guard(__func__, [&] {
+        o3d::capi::require(out, "out");
+        const reg::RobustKernel core = to_kernel(kernel, k, "kernel");
+        if (std::isnan(residual)) throw o3d::InvalidArgument("residual is NaN");
+        *out = core.weight(residual);
+    });
 }
 
 O3D_API o3d_status o3d_register_icp(o3d_registration_result_t** out, const o3d_pointcloud_t* source,

@@ -1,15 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /**
  * @file registration.h
- * @brief ICP (point-to-point with optional scaling, point-to-plane), evaluation, information matrix.
+ * @brief Local refinement (ICP: point-to-point, point-to-plane, colored, generalized, symmetric, with
+ * robust kernels), global registration (RANSAC with correspondence checkers, Fast Global Registration),
+ * evaluation and the information matrix.
  *
  * Mirrors o3d.pipelines.registration. Transformations are row-major 4x4 (16 doubles).
- * Sums are reduced in a fixed order, so results do not depend on the thread count.
+ * Sums are reduced in a fixed order, so results do not depend on the thread count; randomized calls
+ * (RANSAC, FGR) give the same result for the same seed on any thread count.
  */
 #ifndef O3D_REGISTRATION_H
 #define O3D_REGISTRATION_H
 
 #include "o3d/common.h"
+#include "o3d/feature.h"
 #include "o3d/pointcloud.h"
 
 O3D_BEGIN_DECL
@@ -17,6 +21,21 @@ O3D_BEGIN_DECL
 /** Transformation estimation methods. */
 #define O3D_ESTIMATION_POINT_TO_POINT 0 /**< TransformationEstimationPointToPoint */
 #define O3D_ESTIMATION_POINT_TO_PLANE 1 /**< TransformationEstimationPointToPlane (target needs normals) */
+/** TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the target normals. */
+#define O3D_ESTIMATION_COLORED 2
+/** TransformationEstimationForGeneralizedICP (Segal et al. 2009): per-point covariances are taken from the
+ *  clouds when present, else built from their normals, else estimated from 20 neighbours. */
+#define O3D_ESTIMATION_GENERALIZED 3
+/** TransformationEstimationSymmetric (Rusinkiewicz 2019, symmetric point-to-plane): both clouds need normals. */
+#define O3D_ESTIMATION_SYMMETRIC 4
+
+/** Robust kernels (M-estimators) weighting each residual r; k is the kernel's scale. */
+#define O3D_KERNEL_L2 0     /**< L2Loss: w = 1 */
+#define O3D_KERNEL_L1 1     /**< L1Loss: w = 1 / |r| */
+#define O3D_KERNEL_HUBER 2  /**< HuberLoss(k): w = 1 if |r| <= k else k / |r| */
+#define O3D_KERNEL_CAUCHY 3 /**< CauchyLoss(k): w = 1 / (1 + (r / k)^2) */
+#define O3D_KERNEL_GM 4     /**< GMLoss(k) (Geman-McClure): w = k / (k + r^2)^2 */
+#define O3D_KERNEL_TUKEY 5  /**< TukeyLoss(k): w = (1 - (r / k)^2)^2 if |r| <= k else 0 */
 
 /** ICP options: estimation method and ICPConvergenceCriteria. */
 typedef struct o3d_icp_options {
@@ -29,18 +48,26 @@ typedef struct o3d_icp_options {
     int32_t num_threads;         /**< >= 0; 0 = library default */
     o3d_progress_callback progress; /**< called after each iteration with (iteration+1)/max_iteration; may be NULL */
     void* user_data;             /**< passed to `progress` */
+    int32_t kernel;              /**< O3D_KERNEL_*, for point-to-plane, colored, generalized, symmetric; default L2 */
+    double kernel_k;             /**< the kernel's k (> 0; unused by L2 and L1); default 1.0 */
+    double lambda_geometric;     /**< colored ICP: weight of the geometric term, in [0, 1]; default 0.968 */
+    double epsilon;              /**< generalized ICP: covariance regularisation (> 0); default 1e-3 */
 } o3d_icp_options_t;
 
 /** @brief Fill defaults (Open3D's). */
 O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct_size);
 
+/** @brief The weight the robust `kernel` (O3D_KERNEL_*) with scale `k` gives to `residual`. @see RobustKernel.weight */
+O3D_API o3d_status o3d_robust_kernel_weight(int32_t kernel, double k, double residual, double* out);
+
 /** Result of a registration: transformation, fitness, inlier_rmse, correspondence_set. */
 typedef struct o3d_registration_result o3d_registration_result_t;
 
 /**
- * @brief Iterative closest point from `source` onto `target`, starting at `init` (NULL: identity).
- * Pairs farther apart than `max_correspondence_distance` are ignored.
- * @see o3d.pipelines.registration.registration_icp
+ * @brief Iterative closest point from `source` onto `target`, starting at `init` (NULL: identity), with
+ * any estimation (opts.estimation). Pairs farther apart than `max_correspondence_distance` are ignored.
+ * @see o3d.pipelines.registration.registration_icp, registration_colored_icp,
+ * registration_generalized_icp, registration_symmetric_icp
  * **Ownership:** `*out` belongs to the caller (o3d_registration_result_destroy).
  */
 O3D_API o3d_status o3d_register_icp(o3d_registration_result_t** out, const o3d_pointcloud_t* source,
@@ -71,6 +98,107 @@ O3D_API o3d_status o3d_registration_result_get_inlier_rmse(const o3d_registratio
  */
 O3D_API o3d_status o3d_registration_result_get_correspondence_set(const o3d_registration_result_t* result,
                                                                   int32_t* out, size_t capacity, size_t* out_n);
+
+/** Correspondence checkers: prune RANSAC hypotheses early (Open3D's CorrespondenceChecker*). */
+#define O3D_CHECKER_EDGE_LENGTH 0 /**< BasedOnEdgeLength(similarity_threshold in (0, 1]; default 0.9) */
+#define O3D_CHECKER_DISTANCE 1    /**< BasedOnDistance(distance_threshold > 0) */
+#define O3D_CHECKER_NORMAL 2      /**< BasedOnNormal(normal_angle_threshold, radians, > 0): both clouds need normals */
+
+typedef struct o3d_correspondence_checker {
+    uint32_t struct_size; /**< sizeof(o3d_correspondence_checker_t) */
+    int32_t kind;         /**< O3D_CHECKER_* */
+    double threshold;     /**< similarity, distance or angle (see the kinds); must be finite and > 0 */
+} o3d_correspondence_checker_t;
+
+/** @brief Fill a checker of `kind`: threshold 0.9 for EDGE_LENGTH, 0.075 for DISTANCE, 0.5236 (30 deg) for NORMAL. */
+O3D_API o3d_status o3d_correspondence_checker_init(o3d_correspondence_checker_t* checker, uint32_t struct_size,
+                                                   int32_t kind);
+/**
+ * @brief Does the hypothesis pass `checker`? `corres` holds `num_corres` (source, target) index pairs;
+ * `transformation` (NULL: identity) moves the source. `*out_passed` gets 1 or 0. @see CorrespondenceChecker.Check
+ */
+O3D_API o3d_status o3d_correspondence_checker_check(const o3d_correspondence_checker_t* checker,
+                                                    const o3d_pointcloud_t* source, const o3d_pointcloud_t* target,
+                                                    const int32_t* corres, size_t num_corres,
+                                                    const double transformation[16], int32_t* out_passed);
+
+/** RANSAC options: estimation, ransac_n and RANSACConvergenceCriteria, seed, threads, progress. */
+typedef struct o3d_ransac_options {
+    uint32_t struct_size;     /**< sizeof(o3d_ransac_options_t) */
+    int32_t estimation;       /**< O3D_ESTIMATION_POINT_TO_POINT (default) or POINT_TO_PLANE */
+    int32_t with_scaling;     /**< point-to-point: also estimate a scale; default 0 */
+    int32_t ransac_n;         /**< correspondences drawn per hypothesis, >= 3; default 3 */
+    int32_t max_iteration;    /**< RANSACConvergenceCriteria.max_iteration, >= 0; default 100000 */
+    double confidence;        /**< RANSACConvergenceCriteria.confidence, in [0, 1]; default 0.999 */
+    int32_t mutual_filter;    /**< feature matching only: keep mutual nearest pairs; default 0 */
+    int32_t use_seed;         /**< 1: draw from `seed`; 0 (default): take a seed from the global generator (o3d_random_seed) */
+    uint64_t seed;            /**< used when use_seed = 1 */
+    int32_t num_threads;      /**< >= 0; 0 = library default; the result does not depend on it */
+    o3d_progress_callback progress; /**< fraction of max_iteration done (jumps to 1 when confident); may be NULL */
+    void* user_data;          /**< passed to `progress` */
+} o3d_ransac_options_t;
+
+/** @brief Fill defaults (Open3D's). */
+O3D_API o3d_status o3d_ransac_options_init(o3d_ransac_options_t* opts, uint32_t struct_size);
+
+/**
+ * @brief Seed the global generator that randomized calls draw from when they are not given a seed
+ * (RANSAC, FGR). Without it the generator starts from a random device. @see o3d.utility.random.seed
+ */
+O3D_API o3d_status o3d_random_seed(uint64_t seed);
+
+/**
+ * @brief RANSAC over feature correspondences (nearest target descriptor of each source descriptor, see
+ * o3d_correspondences_from_features): each hypothesis fits `ransac_n` drawn pairs, must pass every
+ * checker, and is scored by the share of pairs within `max_correspondence_distance` after the move.
+ * `checkers` holds `num_checkers` entries (may be NULL when 0).
+ * @see o3d.pipelines.registration.registration_ransac_based_on_feature_matching
+ */
+O3D_API o3d_status o3d_register_ransac_based_on_feature_matching(
+    o3d_registration_result_t** out, const o3d_pointcloud_t* source, const o3d_pointcloud_t* target,
+    const o3d_feature_t* source_feature, const o3d_feature_t* target_feature, double max_correspondence_distance,
+    const o3d_correspondence_checker_t* checkers, size_t num_checkers, const o3d_ransac_options_t* opts);
+/** @brief RANSAC over given (source, target) pairs (`num_corres` pairs, 2 int32 each). opts.mutual_filter is ignored.
+ *  @see o3d.pipelines.registration.registration_ransac_based_on_correspondence */
+O3D_API o3d_status o3d_register_ransac_based_on_correspondence(
+    o3d_registration_result_t** out, const o3d_pointcloud_t* source, const o3d_pointcloud_t* target,
+    const int32_t* corres, size_t num_corres, double max_correspondence_distance,
+    const o3d_correspondence_checker_t* checkers, size_t num_checkers, const o3d_ransac_options_t* opts);
+
+/** FastGlobalRegistrationOption, plus seed, threads and progress. */
+typedef struct o3d_fgr_options {
+    uint32_t struct_size;               /**< sizeof(o3d_fgr_options_t) */
+    double division_factor;             /**< > 1: mu is divided by it each annealing step; default 1.4 */
+    int32_t use_absolute_scale;         /**< 1: distances in the clouds' units; 0 (default): normalised scale */
+    int32_t decrease_mu;                /**< anneal mu (graduated non-convexity); default 1 */
+    double maximum_correspondence_distance; /**< > 0; default 0.025 */
+    int32_t iteration_number;           /**< >= 0; default 64 */
+    double tuple_scale;                 /**< in (0, 1]: edge-length similarity of the tuple test; default 0.95 */
+    int32_t maximum_tuple_count;        /**< >= 0; default 1000 */
+    int32_t tuple_test;                 /**< apply the tuple test; default 1 */
+    int32_t use_seed;                   /**< as o3d_ransac_options_t.use_seed (tuples are drawn at random) */
+    uint64_t seed;
+    int32_t num_threads;                /**< >= 0; 0 = library default; the result does not depend on it */
+    o3d_progress_callback progress;     /**< fraction of iteration_number done; may be NULL */
+    void* user_data;
+} o3d_fgr_options_t;
+
+/** @brief Fill defaults (Open3D's). */
+O3D_API o3d_status o3d_fgr_options_init(o3d_fgr_options_t* opts, uint32_t struct_size);
+/** @brief Fast Global Registration (Zhou, Park, Koltun 2016) on mutual feature matches.
+ *  @see o3d.pipelines.registration.registration_fgr_based_on_feature_matching */
+O3D_API o3d_status o3d_register_fgr_based_on_feature_matching(o3d_registration_result_t** out,
+                                                              const o3d_pointcloud_t* source,
+                                                              const o3d_pointcloud_t* target,
+                                                              const o3d_feature_t* source_feature,
+                                                              const o3d_feature_t* target_feature,
+                                                              const o3d_fgr_options_t* opts);
+/** @brief Fast Global Registration on given (source, target) pairs.
+ *  @see o3d.pipelines.registration.registration_fgr_based_on_correspondence */
+O3D_API o3d_status o3d_register_fgr_based_on_correspondence(o3d_registration_result_t** out,
+                                                            const o3d_pointcloud_t* source,
+                                                            const o3d_pointcloud_t* target, const int32_t* corres,
+                                                            size_t num_corres, const o3d_fgr_options_t* opts);
 
 O3D_END_DECL
 

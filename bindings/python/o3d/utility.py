@@ -1,4 +1,5 @@
-"""o3d.utility: containers (Vector3dVector, ...), verbosity, log callback, thread count.
+"""o3d.utility: containers (Vector3dVector, ...), verbosity, log callback, thread count, and
+``o3d.utility.random.seed`` (the global generator of RANSAC and FGR).
 
 The containers exist for Open3D compatibility: anything accepting them also accepts numpy arrays,
 and ``np.asarray(v)`` is a zero-copy view of the container's data. Functions that Open3D gives as
@@ -6,6 +7,8 @@ IntVector/DoubleVector (KDTreeFlann searches, distances) return numpy arrays her
 """
 import atexit
 import enum
+import sys
+import types
 
 import numpy as np
 
@@ -202,9 +205,22 @@ class VerbosityContextManager:
         return False
 
 
+def _seed(seed):
+    """Seed the global generator that RANSAC and FGR draw from when not given a seed (Open3D's
+    o3d.utility.random.seed). Without it the generator starts from a random device. Negative seeds wrap
+    modulo 2**64."""
+    _o3d._random_seed(seed)
+
+
+random = types.ModuleType(__name__ + ".random", "Open3D's o3d.utility.random: seed(seed).")
+_seed.__name__ = _seed.__qualname__ = "seed"
+_seed.__module__ = random.__name__
+random.seed = _seed
+sys.modules[random.__name__] = random
+
 # A Python callback must not be called once the interpreter is shutting down.
 atexit.register(_o3d._set_log_callback, None)
 
 __all__ = ["Vector3dVector", "Vector3iVector", "Vector2dVector", "Vector2iVector", "Matrix3dVector", "IntVector", "DoubleVector", "VerbosityLevel",
            "VerbosityContextManager", "set_verbosity_level", "get_verbosity_level", "set_log_callback",
-           "set_num_threads", "get_num_threads"]
+           "set_num_threads", "get_num_threads", "random"]

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// o3d.geometry.KDTreeFlann and KDTreeSearchParam* over o3d_kdtree_t (kdtree.h).
-#include "common.h"
+// o3d.geometry.KDTreeFlann and KDTreeSearchParam* over o3d_kdtree_t (kdtree.h; trees over features and
+// points of any dimension from feature.h).
+#include "registration_types.h"
 
 namespace o3dpy {
 namespace {
@@ -26,8 +27,43 @@ TreePtr tree_from_cloud(const PyPointCloud& pc) {
     return TreePtr(t, o3d_kdtree_destroy);
 }
 
+TreePtr tree_from_feature(const PyFeature& feature) {
+    o3d_kdtree_t* t = nullptr;
+    locked_const(feature.h, [&](const o3d_feature_t* f) { return o3d_kdtree_create_from_feature(&t, f); });
+    return TreePtr(t, o3d_kdtree_destroy);
+}
+
+/// (N, d) float64 rows of any d >= 1 (one point per row, as the 3-D trees).
+py::array_t<double, py::array::c_style> rows_xd(py::handle obj, const char* what) {
+    py::array a = py::array::ensure(obj);
+    if (!a) invalid(std::string(what) + ": expected an (N, d) array of numbers");
+    char kind = a.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u') invalid(std::string(what) + ": expected numbers, got dtype " + std::string(py::str(a.dtype())));
+    if (a.ndim() != 2) invalid(std::string(what) + ": expected an (N, d) array");
+    auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!d) throw py::error_already_set();
+    return d;
+}
+
+bool is_xd_matrix(py::handle data) {
+    py::array a = py::array::ensure(data);
+    if (!a) {
+        PyErr_Clear();
+        return false;
+    }
+    return a.ndim() == 2 && a.shape(1) != 3 && a.size() > 0;
+}
+
 TreePtr tree_from_data(py::handle data) {
     if (py::isinstance<PyPointCloud>(data)) return tree_from_cloud(data.cast<const PyPointCloud&>());
+    if (py::isinstance<PyFeature>(data)) return tree_from_feature(data.cast<const PyFeature&>());
+    if (is_xd_matrix(data)) {  // (N, d), d != 3: a tree over N points of dimension d
+        auto d = rows_xd(data, "data");
+        o3d_kdtree_t* t = nullptr;
+        size_t n = (size_t)d.shape(0), dim = (size_t)d.shape(1);
+        check(nogil([&] { return o3d_kdtree_create_from_points_xd(&t, d.data(), dim, n); }));
+        return TreePtr(t, o3d_kdtree_destroy);
+    }
     Rows3 r = as_rows3(data, "data");
     py::array_t<double, py::array::c_style | py::array::forcecast> d = r.arr;  // float32 -> one conversion
     o3d_kdtree_t* t = nullptr;
@@ -36,8 +72,21 @@ TreePtr tree_from_data(py::handle data) {
 }
 
 const TreePtr& need(const KDTree& k) {
-    if (!k.tree) invalid("KDTreeFlann has no data: pass a PointCloud or an (N, 3) array, or call set_geometry()");
+    if (!k.tree) invalid("KDTreeFlann has no data: pass a PointCloud, a Feature or an (N, d) array, or call set_geometry()");
     return k.tree;
+}
+
+size_t tree_dimension(const TreePtr& tree) {
+    size_t d = 0;
+    check(o3d_kdtree_dimension(tree.get(), &d));
+    return d;
+}
+
+ResultPtr run_search_xd(const TreePtr& tree, const double* q, size_t nq, size_t dim, const o3d_search_param_t& p,
+                        int32_t num_threads) {
+    o3d_search_result_t* res = nullptr;
+    check(nogil([&] { return o3d_kdtree_search_xd(tree.get(), q, nq, dim, &p, num_threads, &res); }));
+    return ResultPtr(res, o3d_search_result_destroy);
 }
 
 ResultPtr run_search(const TreePtr& tree, const Rows3& q, const o3d_search_param_t& p, int32_t num_threads) {
@@ -61,8 +110,14 @@ py::array flat_view(const T* data, size_t n, const py::object& owner) {
 // Batch search: (offsets int64 (Q+1,), indices int32 (total,), distances2 float64 (total,)), zero-copy
 // read-only views on the C result, which they keep alive.
 py::tuple batch(const KDTree& self, py::handle queries, const o3d_search_param_t& p, int32_t num_threads) {
-    Rows3 q = as_rows3(queries, "queries");
-    ResultPtr r = run_search(need(self), q, p, num_threads);
+    const TreePtr& tree = need(self);
+    ResultPtr r(nullptr, o3d_search_result_destroy);
+    if (tree_dimension(tree) != 3) {  // (Q, d) queries of the tree's dimension
+        auto q = rows_xd(queries, "queries");
+        r = run_search_xd(tree, q.size() ? q.data() : nullptr, (size_t)q.shape(0), (size_t)q.shape(1), p, num_threads);
+    } else {
+        r = run_search(tree, as_rows3(queries, "queries"), p, num_threads);
+    }
     size_t nq = 0, total = 0;
     check(o3d_search_result_counts(r.get(), &nq, &total));
     const int64_t* off = nullptr;
@@ -91,6 +146,26 @@ py::tuple single(const KDTree& self, py::handle query, const o3d_search_param_t&
     check(o3d_search_result_get_indices(r.get(), idx.mutable_data(), total));
     check(o3d_search_result_get_distances2(r.get(), d2.mutable_data(), total));
     return py::make_tuple((int)(offsets[1] - offsets[0]), idx, d2);
+}
+
+// One query of the tree's dimension (Open3D's search_*_vector_xd): (k, indices, distances2).
+py::tuple single_xd(const KDTree& self, py::handle query, const o3d_search_param_t& p) {
+    const TreePtr& tree = need(self);
+    py::array a = py::array::ensure(query);
+    if (!a) invalid("query: expected a vector of numbers");
+    char kind = a.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u') invalid("query: expected numbers, got dtype " + std::string(py::str(a.dtype())));
+    if (!(a.ndim() == 1 || (a.ndim() == 2 && (a.shape(0) == 1 || a.shape(1) == 1)))) invalid("query: expected a vector");
+    auto q = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!q) throw py::error_already_set();
+    ResultPtr r = run_search_xd(tree, q.data(), 1, (size_t)q.size(), p, 1);
+    size_t nq = 0, total = 0;
+    check(o3d_search_result_counts(r.get(), &nq, &total));
+    py::array_t<int32_t> idx((py::ssize_t)total);
+    py::array_t<double> d2((py::ssize_t)total);
+    check(o3d_search_result_get_indices(r.get(), idx.mutable_data(), total));
+    check(o3d_search_result_get_distances2(r.get(), d2.mutable_data(), total));
+    return py::make_tuple((int)total, idx, d2);
 }
 
 o3d_search_param_t knn_param(int32_t knn) {
@@ -127,7 +202,10 @@ void declare_kdtree(py::module_& m) {
     py::class_<SearchParamKNN, SearchParam>(m, "KDTreeSearchParamKNN", "The knn nearest neighbours.");
     py::class_<SearchParamRadius, SearchParam>(m, "KDTreeSearchParamRadius", "All neighbours within radius.");
     py::class_<SearchParamHybrid, SearchParam>(m, "KDTreeSearchParamHybrid", "At most max_nn nearest neighbours within radius.");
-    py::class_<KDTree>(m, "KDTreeFlann", "KD-tree over 3-D points. It copies the points: later edits of the cloud are not seen.");
+    py::class_<KDTree>(m, "KDTreeFlann",
+                       "KD-tree over 3-D points (a PointCloud, an (N, 3) array), the descriptors of a Feature, or an "
+                       "(N, d) array of points of any dimension (one point per row). It copies the data: later edits "
+                       "are not seen.");
 }
 
 void define_kdtree(py::module_& m) {
@@ -177,7 +255,7 @@ void define_kdtree(py::module_& m) {
     static_cast<py::class_<KDTree>>(m.attr("KDTreeFlann"))
         .def(py::init<>(), "An empty tree; call set_geometry() before searching.")
         .def(py::init([](py::handle data) { return KDTree{tree_from_data(data)}; }), py::arg("data"),
-             "A tree over a PointCloud's points or an (N, 3) float64/float32 array.")
+             "A tree over a PointCloud's points, a Feature's descriptors, or an (N, d) array (float32 kept for d = 3).")
         .def(
             "set_geometry",
             [](KDTree& self, const PyPointCloud& geometry) {
@@ -186,12 +264,40 @@ void define_kdtree(py::module_& m) {
             },
             py::arg("geometry"))
         .def(
+            "set_feature",
+            [](KDTree& self, const PyFeature& feature) {
+                self.tree = tree_from_feature(feature);
+                return true;
+            },
+            py::arg("feature"), "Index the descriptors of a Feature (of its dimension).")
+        .def(
+            "search_vector_xd",
+            [](const KDTree& self, py::handle query, py::handle search_param) {
+                return single_xd(self, query, to_search_param(search_param));
+            },
+            py::arg("query"), py::arg("search_param"))
+        .def(
+            "search_knn_vector_xd",
+            [](const KDTree& self, py::handle query, int32_t knn) { return single_xd(self, query, knn_param(knn)); },
+            py::arg("query"), py::arg("knn"),
+            "(k, indices, distances2) of the knn nearest points to a query of the tree's dimension, nearest first.")
+        .def(
+            "search_radius_vector_xd",
+            [](const KDTree& self, py::handle query, double radius) { return single_xd(self, query, radius_param(radius)); },
+            py::arg("query"), py::arg("radius"))
+        .def(
+            "search_hybrid_vector_xd",
+            [](const KDTree& self, py::handle query, double radius, int32_t max_nn) {
+                return single_xd(self, query, hybrid_param(radius, max_nn));
+            },
+            py::arg("query"), py::arg("radius"), py::arg("max_nn"))
+        .def(
             "set_matrix_data",
             [](KDTree& self, py::handle data) {
                 self.tree = tree_from_data(data);
                 return true;
             },
-            py::arg("data"), "Index an (N, 3) array.")
+            py::arg("data"), "Index an (N, d) array (one point per row).")
         .def("size",
              [](const KDTree& self) {
                  size_t n = 0;

@@ -1,21 +1,30 @@
 // SPDX-License-Identifier: MIT
-// o3d.pipelines.registration natives over registration.h: ICP (with a GIL-safe, cancellable progress
-// callback), evaluation, information matrix, and the option/result classes.
+// o3d.pipelines.registration natives over registration.h: ICP with every estimation (point-to-point,
+// point-to-plane, colored, generalized, symmetric; robust kernels) and a GIL-safe, cancellable progress
+// callback, evaluation, information matrix, the option/result classes, and the helpers the global
+// registration and pose-graph bindings share (registration_types.h).
+#include <cstdio>
 #include <memory>
 #include <optional>
+#include <sstream>
 
-#include "common.h"
+#include "registration_types.h"
 
 namespace o3dpy {
 namespace {
 
-struct Estimation {
-    int32_t kind = O3D_ESTIMATION_POINT_TO_POINT;
-    bool with_scaling = false;
-};
 struct PointToPoint : Estimation {};
 struct PointToPlane : Estimation {
     PointToPlane() { kind = O3D_ESTIMATION_POINT_TO_PLANE; }
+};
+struct ColoredICP : Estimation {
+    ColoredICP() { kind = O3D_ESTIMATION_COLORED; }
+};
+struct GeneralizedICP : Estimation {
+    GeneralizedICP() { kind = O3D_ESTIMATION_GENERALIZED; }
+};
+struct Symmetric : Estimation {
+    Symmetric() { kind = O3D_ESTIMATION_SYMMETRIC; }
 };
 
 struct Criteria {
@@ -24,15 +33,6 @@ struct Criteria {
     int32_t max_iteration = 30;
 };
 
-struct Result {
-    py::object transformation;
-    double fitness = 0.0;
-    double inlier_rmse = 0.0;
-    py::object correspondence_set;
-};
-
-using ResultPtr = std::unique_ptr<o3d_registration_result_t, void (*)(o3d_registration_result_t*)>;
-
 py::array_t<double> identity4() {
     py::array_t<double> a(std::vector<py::ssize_t>{4, 4});
     double* p = a.mutable_data();
@@ -40,16 +40,84 @@ py::array_t<double> identity4() {
     return a;
 }
 
-std::array<double, 16> mat4_or_identity(py::handle T, const char* what) {
-    if (T.is_none()) {
-        std::array<double, 16> id{};
-        for (int i = 0; i < 4; ++i) id[i * 5] = 1.0;
-        return id;
-    }
-    return as_mat4(T, what);
+std::string shortest(double v) {  // 0.968, 0.001: as Open3D prints these parameters
+    std::ostringstream s;
+    s << v;
+    return s.str();
 }
 
-Result convert(o3d_registration_result_t* r) {
+/// Lock source and target for reading (once when they are the same cloud), GIL released, then call f.
+template <typename F>
+void with_pair(const PyPointCloud& source, const PyPointCloud& target, F&& f) {
+    CloudPtr a = source.h, b = target.h;
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        SharedLocks locks;
+        locks.add(a->mutex);
+        locks.add(b->mutex);
+        s = f(a->pc, b->pc);
+    }
+    check(s);
+}
+
+Result icp(const PyPointCloud& source, const PyPointCloud& target, double max_dist, py::handle init,
+           py::handle estimation, py::handle criteria, py::object progress, int32_t num_threads) {
+    o3d_icp_options_t o;
+    check(o3d_icp_options_init(&o, sizeof(o)));
+    static const Estimation point_to_point;
+    const Estimation& e = as_estimation(estimation, point_to_point);
+    o.estimation = e.kind;
+    o.with_scaling = e.with_scaling ? 1 : 0;
+    o.kernel = e.kernel->kind;
+    o.kernel_k = e.kernel->k;
+    o.lambda_geometric = e.lambda_geometric;
+    o.epsilon = e.epsilon;
+    if (!criteria.is_none()) {
+        if (!py::isinstance<Criteria>(criteria)) invalid("criteria: expected ICPConvergenceCriteria");
+        const auto& c = criteria.cast<const Criteria&>();
+        o.relative_fitness = c.relative_fitness;
+        o.relative_rmse = c.relative_rmse;
+        o.max_iteration = c.max_iteration;
+    }
+    o.num_threads = num_threads;
+    Progress ctx(progress);
+    o.progress = &progress_trampoline;
+    o.user_data = &ctx;
+    auto T = mat4_or_identity(init, "init");
+    o3d_registration_result_t* raw = nullptr;
+    CloudPtr a = source.h, b = target.h;
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        SharedLocks locks;
+        locks.add(a->mutex);
+        locks.add(b->mutex);
+        s = o3d_register_icp(&raw, a->pc, b->pc, max_dist, T.data(), &o);
+    }
+    ResultPtr r(raw, o3d_registration_result_destroy);
+    ctx.rethrow();  // the callback's own exception (or KeyboardInterrupt)
+    check(s);
+    return convert_result(r.get());
+}
+
+template <typename E>
+py::class_<E, Estimation> estimation_class(py::module_& m, const char* name) {
+    return static_cast<py::class_<E, Estimation>>(m.attr(name));
+}
+
+template <typename E>
+void def_kernel(py::class_<E, Estimation>& c) {
+    c.def_property(
+        "kernel", [](const E& e) { return e.kernel; }, [](E& e, py::handle k) { e.kernel = as_kernel(k); },
+        "The robust kernel weighting the residuals (shared: changing its k changes this estimation).");
+}
+
+}  // namespace
+
+// ---- helpers shared with registration_global.cpp and pose_graph.cpp
+
+Result convert_result(o3d_registration_result_t* r) {
     Result out;
     py::array_t<double> T(std::vector<py::ssize_t>{4, 4});
     check(o3d_registration_result_get_transformation(r, T.mutable_data()));
@@ -65,30 +133,60 @@ Result convert(o3d_registration_result_t* r) {
     return out;
 }
 
-/// Lock source and target for reading (once when they are the same cloud), GIL released, then call f.
-template <typename F>
-void with_pair(const PyPointCloud& source, const PyPointCloud& target, F&& f) {
-    CloudPtr a = source.h, b = target.h;
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::shared_lock<std::shared_mutex> la(a->mutex);
-        std::shared_lock<std::shared_mutex> lb(b->mutex, std::defer_lock);
-        if (b != a) lb.lock();
-        s = f(a->pc, b->pc);
+std::array<double, 16> mat4_or_identity(py::handle T, const char* what) {
+    if (T.is_none()) {
+        std::array<double, 16> id{};
+        for (int i = 0; i < 4; ++i) id[i * 5] = 1.0;
+        return id;
     }
-    check(s);
+    return as_mat4(T, what);
 }
 
-struct Progress {
-    py::object callback;  // callable(fraction) -> truthy to cancel; may be None
-    std::optional<py::error_already_set> error;
-};
+const Estimation& as_estimation(py::handle obj, const Estimation& fallback) {
+    if (obj.is_none()) return fallback;
+    if (!py::isinstance<Estimation>(obj))
+        invalid("estimation_method: expected a TransformationEstimation (PointToPoint, PointToPlane, ForColoredICP, "
+                "ForGeneralizedICP or Symmetric)");
+    return obj.cast<const Estimation&>();
+}
+
+py::array_t<int32_t, py::array::c_style> as_corres(py::handle obj, const char* what) {
+    if (obj.is_none()) invalid(std::string(what) + ": expected (N, 2) index pairs, got None");
+    py::array a = py::array::ensure(obj);
+    if (!a) invalid(std::string(what) + ": expected (N, 2) index pairs (Vector2iVector, ndarray or a list of pairs)");
+    if (a.size() == 0) return py::array_t<int32_t, py::array::c_style>(std::vector<py::ssize_t>{0, 2});
+    char kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u') invalid(std::string(what) + ": expected integer index pairs, got dtype " +
+                                            std::string(py::str(a.dtype())));
+    if (a.ndim() != 2 || a.shape(1) != 2)
+        invalid(std::string(what) + ": expected shape (N, 2), got " + std::string(py::str(py::tuple(a.attr("shape")))));
+    if (!a.dtype().is(py::dtype::of<int32_t>())) {  // no silent wrap-around of wide integers
+        long long lo = a.attr("min")().cast<long long>();
+        py::object hi = a.attr("max")();
+        if (lo < 0 || hi.cast<unsigned long long>() > 0x7fffffffULL)
+            invalid(std::string(what) + ": index out of the int32 range");
+    }
+    auto out = py::array_t<int32_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!out) throw py::error_already_set();
+    return out;
+}
+
+Progress::Progress(py::object cb) : callback(std::move(cb)) {
+    if (!callback.is_none() && !PyCallable_Check(callback.ptr())) invalid("progress: expected a callable or None");
+}
+
+void Progress::rethrow() {
+    if (error) {
+        py::error_already_set e = std::move(*error);
+        error.reset();
+        throw e;
+    }
+}
 
 int32_t progress_trampoline(double fraction, void* user_data) {
     auto* p = static_cast<Progress*>(user_data);
     py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) {  // Ctrl-C while ICP runs: cancel, re-raise KeyboardInterrupt after
+    if (PyErr_CheckSignals() != 0) {  // Ctrl-C during the call: cancel, re-raise KeyboardInterrupt after
         p->error.emplace();
         return 1;
     }
@@ -101,76 +199,120 @@ int32_t progress_trampoline(double fraction, void* user_data) {
     }
 }
 
-Result icp(const PyPointCloud& source, const PyPointCloud& target, double max_dist, py::handle init,
-           py::handle estimation, py::handle criteria, py::object progress, int32_t num_threads) {
-    o3d_icp_options_t o;
-    check(o3d_icp_options_init(&o, sizeof(o)));
-    if (!estimation.is_none()) {
-        if (!py::isinstance<Estimation>(estimation))
-            invalid("estimation_method: expected TransformationEstimationPointToPoint or TransformationEstimationPointToPlane");
-        const auto& e = estimation.cast<const Estimation&>();
-        o.estimation = e.kind;
-        o.with_scaling = e.with_scaling ? 1 : 0;
-    }
-    if (!criteria.is_none()) {
-        if (!py::isinstance<Criteria>(criteria)) invalid("criteria: expected ICPConvergenceCriteria");
-        const auto& c = criteria.cast<const Criteria&>();
-        o.relative_fitness = c.relative_fitness;
-        o.relative_rmse = c.relative_rmse;
-        o.max_iteration = c.max_iteration;
-    }
-    o.num_threads = num_threads;
-    if (!progress.is_none() && !PyCallable_Check(progress.ptr())) invalid("progress: expected a callable or None");
-    Progress ctx{progress, std::nullopt};
-    o.progress = &progress_trampoline;
-    o.user_data = &ctx;
-    auto T = mat4_or_identity(init, "init");
-    o3d_registration_result_t* raw = nullptr;
-    CloudPtr a = source.h, b = target.h;
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::shared_lock<std::shared_mutex> la(a->mutex);
-        std::shared_lock<std::shared_mutex> lb(b->mutex, std::defer_lock);
-        if (b != a) lb.lock();
-        s = o3d_register_icp(&raw, a->pc, b->pc, max_dist, T.data(), &o);
-    }
-    ResultPtr r(raw, o3d_registration_result_destroy);
-    if (ctx.error) throw std::move(*ctx.error);  // the callback's own exception (or KeyboardInterrupt)
-    check(s);
-    return convert(r.get());
+std::pair<int32_t, uint64_t> seed_fields(py::handle seed) {
+    if (seed.is_none()) return {0, 0};
+    if (PyBool_Check(seed.ptr()) || !PyIndex_Check(seed.ptr())) invalid("seed: expected an integer or None");
+    py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(seed.ptr()));
+    if (!i) throw py::error_already_set();
+    return {1, (uint64_t)PyLong_AsUnsignedLongLongMask(i.ptr())};
 }
 
-}  // namespace
+// ---- registration
 
 void declare_registration(py::module_& m) {
     py::class_<Estimation>(m, "TransformationEstimation", "Base of the ICP transformation estimation methods.");
     py::class_<PointToPoint, Estimation>(m, "TransformationEstimationPointToPoint");
     py::class_<PointToPlane, Estimation>(m, "TransformationEstimationPointToPlane");
+    py::class_<ColoredICP, Estimation>(m, "TransformationEstimationForColoredICP");
+    py::class_<GeneralizedICP, Estimation>(m, "TransformationEstimationForGeneralizedICP");
+    py::class_<Symmetric, Estimation>(m, "TransformationEstimationSymmetric");
     py::class_<Criteria>(m, "ICPConvergenceCriteria");
     py::class_<Result>(m, "RegistrationResult");
+    declare_robust_kernel(m);
+    declare_feature(m);
+    declare_registration_global(m);
+    declare_pose_graph(m);
 }
 
 void define_registration(py::module_& m) {
-    static_cast<py::class_<PointToPoint, Estimation>>(m.attr("TransformationEstimationPointToPoint"))
-        .def(py::init([](bool with_scaling) {
-                 PointToPoint e;
-                 e.with_scaling = with_scaling;
-                 return e;
-             }),
-             py::arg("with_scaling") = false, "Point-to-point ICP (with_scaling=True also estimates a scale).")
+    define_robust_kernel(m);
+    auto p2p = estimation_class<PointToPoint>(m, "TransformationEstimationPointToPoint");
+    p2p.def(py::init([](bool with_scaling) {
+               PointToPoint e;
+               e.with_scaling = with_scaling;
+               return e;
+           }),
+           py::arg("with_scaling") = false, "Point-to-point ICP (with_scaling=True also estimates a scale).")
+        .def(py::init<const PointToPoint&>(), py::arg("other"), "Copy constructor")
         .def_property(
             "with_scaling", [](const PointToPoint& e) { return e.with_scaling; },
             [](PointToPoint& e, bool v) { e.with_scaling = v; })
         .def("__repr__", [](const PointToPoint& e) {
             return std::string("TransformationEstimationPointToPoint(with_scaling=") + (e.with_scaling ? "True" : "False") + ")";
         });
-    static_cast<py::class_<PointToPlane, Estimation>>(m.attr("TransformationEstimationPointToPlane"))
-        .def(py::init<>(), "Point-to-plane ICP (the target needs normals).")
-        .def("__repr__", [](const PointToPlane&) { return std::string("TransformationEstimationPointToPlane()"); });
+
+    auto p2l = estimation_class<PointToPlane>(m, "TransformationEstimationPointToPlane");
+    p2l.def(py::init([](py::handle kernel) {
+               PointToPlane e;
+               e.kernel = as_kernel(kernel);
+               return e;
+           }),
+           py::arg("kernel") = py::none(), "Point-to-plane ICP (the target needs normals), residuals weighted by kernel.")
+        .def(py::init<const PointToPlane&>(), py::arg("other"), "Copy constructor")
+        .def("__repr__", [](const PointToPlane&) { return std::string("TransformationEstimationPointToPlane"); });
+    def_kernel(p2l);
+
+    auto colored = estimation_class<ColoredICP>(m, "TransformationEstimationForColoredICP");
+    colored
+        .def(py::init([](double lambda_geometric, py::handle kernel) {
+                 ColoredICP e;
+                 e.lambda_geometric = lambda_geometric;
+                 e.kernel = as_kernel(kernel);
+                 return e;
+             }),
+             py::arg("lambda_geometric") = 0.968, py::arg("kernel") = py::none(),
+             "Colored ICP (Park et al. 2017): both clouds need colors, the target normals; lambda_geometric in [0, 1] "
+             "weighs the geometric term against the photometric one.")
+        .def(py::init([](const KernelPtr& kernel) {
+                 ColoredICP e;
+                 e.kernel = kernel;
+                 return e;
+             }),
+             py::arg("kernel"))
+        .def(py::init<const ColoredICP&>(), py::arg("other"), "Copy constructor")
+        .def_readwrite("lambda_geometric", &ColoredICP::lambda_geometric)
+        .def("__repr__", [](const ColoredICP& e) {
+            return "TransformationEstimationForColoredICP(lambda_geometric=" + shortest(e.lambda_geometric) + ")";
+        });
+    def_kernel(colored);
+
+    auto gicp = estimation_class<GeneralizedICP>(m, "TransformationEstimationForGeneralizedICP");
+    gicp.def(py::init([](double epsilon, py::handle kernel) {
+                GeneralizedICP e;
+                e.epsilon = epsilon;
+                e.kernel = as_kernel(kernel);
+                return e;
+            }),
+            py::arg("epsilon") = 1e-3, py::arg("kernel") = py::none(),
+            "Generalized ICP (Segal et al. 2009); epsilon regularises the per-point covariances.")
+        .def(py::init([](const KernelPtr& kernel) {
+                 GeneralizedICP e;
+                 e.kernel = kernel;
+                 return e;
+             }),
+             py::arg("kernel"))
+        .def(py::init<const GeneralizedICP&>(), py::arg("other"), "Copy constructor")
+        .def_readwrite("epsilon", &GeneralizedICP::epsilon)
+        .def("__repr__", [](const GeneralizedICP& e) {
+            return "TransformationEstimationForGeneralizedICP(epsilon=" + shortest(e.epsilon) + ")";
+        });
+    def_kernel(gicp);
+
+    auto sym = estimation_class<Symmetric>(m, "TransformationEstimationSymmetric");
+    sym.def(py::init([](py::handle kernel) {
+               Symmetric e;
+               e.kernel = as_kernel(kernel);
+               return e;
+           }),
+           py::arg("kernel") = py::none(), "Symmetric point-to-plane ICP (Rusinkiewicz 2019): both clouds need normals.")
+        .def(py::init<const Symmetric&>(), py::arg("other"), "Copy constructor")
+        .def("__repr__", [](const Symmetric&) { return std::string("TransformationEstimationSymmetric"); });
+    def_kernel(sym);
+
     static_cast<py::class_<Criteria>>(m.attr("ICPConvergenceCriteria"))
         .def(py::init([](double rf, double rr, int32_t it) { return Criteria{rf, rr, it}; }), py::arg("relative_fitness") = 1e-6,
              py::arg("relative_rmse") = 1e-6, py::arg("max_iteration") = 30)
+        .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
         .def_readwrite("relative_fitness", &Criteria::relative_fitness)
         .def_readwrite("relative_rmse", &Criteria::relative_rmse)
         .def_readwrite("max_iteration", &Criteria::max_iteration)
@@ -198,7 +340,8 @@ void define_registration(py::module_& m) {
     m.def("_registration_icp", &icp, py::arg("source"), py::arg("target"), py::arg("max_correspondence_distance"),
           py::arg("init") = py::none(), py::arg("estimation_method") = py::none(), py::arg("criteria") = py::none(),
           py::arg("progress") = py::none(), py::arg("num_threads") = 0,
-          "ICP; progress(fraction) is called after each iteration and cancels when it returns True or raises.");
+          "ICP with any estimation; progress(fraction) is called after each iteration and cancels when it returns "
+          "True or raises.");
     m.def(
         "evaluate_registration",
         [](const PyPointCloud& source, const PyPointCloud& target, double max_dist, py::handle transformation) {
@@ -208,7 +351,7 @@ void define_registration(py::module_& m) {
                 return o3d_evaluate_registration(&raw, a, b, max_dist, T.data());
             });
             ResultPtr r(raw, o3d_registration_result_destroy);
-            return convert(r.get());
+            return convert_result(r.get());
         },
         py::arg("source"), py::arg("target"), py::arg("max_correspondence_distance"),
         py::arg("transformation") = py::none(), "Fitness, inlier RMSE and correspondences of source moved by transformation.");
@@ -225,6 +368,9 @@ void define_registration(py::module_& m) {
         },
         py::arg("source"), py::arg("target"), py::arg("max_correspondence_distance"), py::arg("transformation"),
         "The (6, 6) information matrix of the correspondences under transformation.");
+    define_feature(m);
+    define_registration_global(m);
+    define_pose_graph(m);
 }
 
 }  // namespace o3dpy

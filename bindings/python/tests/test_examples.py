@@ -66,3 +66,35 @@ def test_new_examples_usage_error():
     for name in ("rgbd_to_point_cloud.py", "mesh_cleanup.py"):
         run = subprocess.run([sys.executable, str(EXAMPLES / name)], capture_output=True, text=True, timeout=60)
         assert run.returncode == 2 and "usage" in run.stderr.lower()
+
+
+def test_multiway_registration_example(data_file):
+    import ast
+
+    import numpy as np
+
+    data = str(__import__("pathlib").Path(data_file("livingroom1_clean_micro/depth/00040.png")).parents[1])
+    run = subprocess.run([sys.executable, str(EXAMPLES / "multiway_registration.py"), data],
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert "pose graph: 5 nodes, 10 edges (6 loop closures)" in run.stdout
+    # Open3D 0.20 running the same script (tools/reference/record_python_registration.py, multiway: lines)
+    assert "optimized: 9 edges kept (1 loop closures pruned)" in run.stdout
+    open3d_poses = {
+        1: [[0.9995, -0.0038, 0.0302, 0.0211], [-0.0002, 0.9915, 0.1299, -0.2535], [-0.0304, -0.1299, 0.9911, -0.0244]],
+        2: [[0.996, -0.0217, 0.0866, 0.0147], [0.0005, 0.9713, 0.2377, -0.47], [-0.0893, -0.2367, 0.9675, -0.0227]],
+        3: [[0.979, -0.0566, 0.1961, -0.0746], [0.0027, 0.9643, 0.2647, -0.5295], [-0.204, -0.2586, 0.9442, 0.0399]],
+        4: [[0.9296, -0.1051, 0.3532, -0.2273], [0.0077, 0.9638, 0.2666, -0.5365], [-0.3684, -0.2451, 0.8968, 0.1388]],
+    }
+    poses = {int(line.split()[1]): ast.literal_eval(line.split(": ", 1)[1])
+             for line in run.stdout.splitlines() if line.startswith("pose ") and line.split()[1].isdigit()}
+    assert sorted(poses) == [0, 1, 2, 3, 4]
+    np.testing.assert_allclose(poses[0], np.eye(4), atol=1e-4)
+    for i, rows in open3d_poses.items():
+        np.testing.assert_allclose(np.array(poses[i])[:3], rows, atol=5e-3)  # 5 mm / ~0.3 deg
+
+
+def test_multiway_registration_usage_error():
+    run = subprocess.run([sys.executable, str(EXAMPLES / "multiway_registration.py")], capture_output=True, text=True,
+                         timeout=60)
+    assert run.returncode == 2 and "usage" in run.stderr.lower()

@@ -33,6 +33,11 @@ O3D_CS_ARRAY(int32_t, int)
 %typemap(cstype) int64_t *O3D_OUT "long[]"
 %typemap(in) int64_t *O3D_OUT %{ $1 = ($1_ltype)$input; %}
 %typemap(csin) int64_t *O3D_OUT "$csinput"
+%typemap(ctype) const int64_t *O3D_IN "const int64_t *"
+%typemap(imtype, inattributes="[global::System.Runtime.InteropServices.In, global::System.Runtime.InteropServices.MarshalAs(global::System.Runtime.InteropServices.UnmanagedType.LPArray)]") const int64_t *O3D_IN "long[]"
+%typemap(cstype) const int64_t *O3D_IN "long[]"
+%typemap(in) const int64_t *O3D_IN %{ $1 = ($1_ltype)$input; %}
+%typemap(csin) const int64_t *O3D_IN "$csinput"
 O3D_CS_ARRAY(uint8_t, unsigned char)
 
 /* ---- scalar outputs: `out T` --------------------------------------------------------------- */

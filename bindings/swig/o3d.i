@@ -13,6 +13,9 @@
  *   - arrays are one managed array per call (double[]/float[]/int[]/long[]/byte[]), pinned or
  *     copied once; fixed-size arrays (`double out[16]`) likewise;
  *   - scalar outputs are `out T` in C# and `T[1]` in Java;
+ *   - plain structs (options, o3d_correspondence_checker_t, o3d_pose_graph_edge_t, summaries) are
+ *     non-public proxy classes; C arrays of them and their fixed-size array members go through the
+ *     o3dx_ helpers below (the same in both languages), never through language-specific code;
  *   - ERRORS: every function returning o3d_status goes through the single `ret` typemap below,
  *     which turns a non-OK status plus o3d_last_error_message() into the language's
  *     O3dException (carrying the status). It runs after argout/freearg, so pinned arrays are
@@ -26,6 +29,7 @@
 
 %{
 #include <stdint.h>
+#include <stdlib.h>
 #include "o3d/o3d.h"
 %}
 
@@ -59,6 +63,12 @@ static uint32_t o3dx_sizeof_mesh_read_options(void) { return (uint32_t)sizeof(o3
 static uint32_t o3dx_sizeof_mesh_write_options(void) { return (uint32_t)sizeof(o3d_mesh_write_options_t); }
 static uint32_t o3dx_sizeof_rgbd_options(void) { return (uint32_t)sizeof(o3d_rgbd_options_t); }
 static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)sizeof(o3d_depth_to_cloud_options_t); }
+static uint32_t o3dx_sizeof_correspondence_checker(void) { return (uint32_t)sizeof(o3d_correspondence_checker_t); }
+static uint32_t o3dx_sizeof_ransac_options(void) { return (uint32_t)sizeof(o3d_ransac_options_t); }
+static uint32_t o3dx_sizeof_fgr_options(void) { return (uint32_t)sizeof(o3d_fgr_options_t); }
+static uint32_t o3dx_sizeof_pose_graph_edge(void) { return (uint32_t)sizeof(o3d_pose_graph_edge_t); }
+static uint32_t o3dx_sizeof_global_optimization_options(void) { return (uint32_t)sizeof(o3d_global_optimization_options_t); }
+static uint32_t o3dx_sizeof_global_optimization_summary(void) { return (uint32_t)sizeof(o3d_global_optimization_summary_t); }
 %}
 
 /* ---- opaque handles and raw pointers ------------------------------------------------------- */
@@ -75,12 +85,14 @@ static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)size
   o3d_lineset_t *, const o3d_lineset_t *,
   o3d_voxelgrid_t *, const o3d_voxelgrid_t *,
   o3d_octree_t *, const o3d_octree_t *,
+  o3d_feature_t *, const o3d_feature_t *,
+  o3d_pose_graph_t *, const o3d_pose_graph_t *,
   void *, o3d_log_callback, o3d_progress_callback
 }
 %apply SWIGTYPE **O3D_PTROUT {
   o3d_pointcloud_t **, o3d_kdtree_t **, o3d_search_result_t **, o3d_registration_result_t **,
   o3d_buffer_t **, o3d_trianglemesh_t **, o3d_image_t **, o3d_rgbd_image_t **, o3d_camera_trajectory_t **,
-  o3d_lineset_t **, o3d_voxelgrid_t **, o3d_octree_t **,
+  o3d_lineset_t **, o3d_voxelgrid_t **, o3d_octree_t **, o3d_feature_t **, o3d_pose_graph_t **,
   const uint8_t **out_data, uint8_t **out_data, const double **out_data, double **out_data,
   const int32_t **out_data, int32_t **out_data,
   const int64_t **out_offsets, const int32_t **out_indices, const double **out_distances2
@@ -166,13 +178,71 @@ static uint32_t o3dx_sizeof_depth_to_cloud_options(void) { return (uint32_t)size
 %apply const uint8_t *O3D_IN { const uint8_t *data }
 %include "o3d/io.h"
 
+/* ---- feature.h ----------------------------------------------------------------------------- */
+/* `double *out` (get_data) and `int32_t *out` (correspondence pairs) are arrays; `size_t *out`
+ * (dimension, num) is a scalar. Descriptors and xd points come in through `const double *data`. */
+%apply const int64_t *O3D_IN { const int64_t *indices }
+%apply double *O3D_OUT { double *out }
+%apply int32_t *O3D_OUT { int32_t *out }
+%apply size_t *O3D_SOUT { size_t *out }
+%include "o3d/feature.h"
+%clear double *out;
+%clear int32_t *out;
+%clear size_t *out;
+
 /* ---- registration.h ------------------------------------------------------------------------ */
 %apply const double *O3D_IN { const double init[ANY], const double transformation[ANY] }
+%apply const int32_t *O3D_IN { const int32_t *corres }
 %apply double *O3D_SOUT { double *out }
 %apply int32_t *O3D_OUT { int32_t *out }
+%apply int32_t *O3D_SOUT { int32_t *out_passed }
 %include "o3d/registration.h"
 %clear double *out;
 %clear int32_t *out;
+
+/* The `checkers, num_checkers` pairs take a C array of o3d_correspondence_checker_t: the idiomatic
+ * layers fill each entry through a (non-public) proxy filled by o3d_correspondence_checker_init,
+ * copy it in with o3dx_checkers_set, pass the array and free it (in finally). */
+%inline %{
+/* `n` zeroed checkers (at least one slot, so that n = 0 still gives a valid address); NULL when out of memory. */
+static o3d_correspondence_checker_t *o3dx_checkers_new(size_t n) {
+  return (o3d_correspondence_checker_t *)calloc(n ? n : 1, sizeof(o3d_correspondence_checker_t));
+}
+/* Copy `checker` into slot `i` of an array of `n` from o3dx_checkers_new; out-of-range or NULL: no-op. */
+static void o3dx_checkers_set(o3d_correspondence_checker_t *checkers, size_t n, size_t i,
+                              const o3d_correspondence_checker_t *checker) {
+  if (checkers && checker && i < n) checkers[i] = *checker;
+}
+static void o3dx_checkers_delete(o3d_correspondence_checker_t *checkers) { free(checkers); }
+%}
+
+/* ---- posegraph.h --------------------------------------------------------------------------- */
+/* o3d_pose_graph_edge_t and o3d_global_optimization_summary_t are plain structs: (non-public) proxy
+ * classes; the edge's two matrices are read and written as one flat double[] (below). */
+%ignore o3d_pose_graph_edge::transformation;
+%ignore o3d_pose_graph_edge::information;
+%apply const double *O3D_IN { const double pose[ANY] }
+%apply double *O3D_OUT { double out_pose[ANY] }
+%apply size_t *O3D_SOUT { size_t *out }
+%include "o3d/posegraph.h"
+%clear size_t *out;
+%apply const double *O3D_IN { const double *values }
+%apply double *O3D_OUT { double *out_values }
+%inline %{
+/* The edge's matrices as 52 doubles: row-major transformation (16), then row-major information (36). */
+static void o3dx_pose_graph_edge_set_matrices(o3d_pose_graph_edge_t *edge, const double *values) {
+  int i;
+  if (!edge || !values) return;
+  for (i = 0; i < 16; ++i) edge->transformation[i] = values[i];
+  for (i = 0; i < 36; ++i) edge->information[i] = values[16 + i];
+}
+static void o3dx_pose_graph_edge_get_matrices(const o3d_pose_graph_edge_t *edge, double *out_values) {
+  int i;
+  if (!edge || !out_values) return;
+  for (i = 0; i < 16; ++i) out_values[i] = edge->transformation[i];
+  for (i = 0; i < 36; ++i) out_values[16 + i] = edge->information[i];
+}
+%}
 
 /* ---- boundingbox.h, hull.h, lineset.h, voxelgrid.h, octree.h ---------------------------------- */
 /* o3d_obb_t and o3d_octree_node_info_t are frozen-layout value structs: (non-public) proxy classes

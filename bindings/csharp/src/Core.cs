@@ -71,6 +71,22 @@ namespace O3d
             return r;
         }
 
+        /// <summary>Pairs in a flattened (source, target) index array; throws when it is null or of odd length.</summary>
+        internal static ulong Pairs(int[] pairs, string name)
+        {
+            if (pairs == null) throw new ArgumentNullException(name);
+            if (pairs.Length % 2 != 0)
+                throw new ArgumentException(name + ": length " + pairs.Length + " is not a multiple of 2", name);
+            return (ulong)(pairs.Length / 2);
+        }
+
+        /// <summary>A count or index (&gt;= 0) as the C API's size_t; throws ArgumentOutOfRangeException when negative.</summary>
+        internal static ulong Count(long value, string name)
+        {
+            if (value < 0) throw new ArgumentOutOfRangeException(name, value, name + " must be >= 0");
+            return (ulong)value;
+        }
+
         internal static double[] Fixed(double[] values, int length, string name, bool nullable)
         {
             if (values == null)

@@ -72,7 +72,10 @@ namespace O3d
         }
     }
 
-    /// <summary>KD-tree over 3-D points (o3d.geometry.KDTreeFlann). It copies the points it indexes.</summary>
+    /// <summary>
+    /// KD-tree (o3d.geometry.KDTreeFlann) over 3-D points, or over points of any dimension (a <see cref="Feature"/>'s
+    /// descriptors, <see cref="FromPointsXd"/>) searched with the *Xd methods. It copies the points it indexes.
+    /// </summary>
     public sealed class KDTreeFlann : NativeHandle
     {
         internal override void Destroy(IntPtr handle) { O3dNative.o3d_kdtree_destroy(handle); }
@@ -93,9 +96,36 @@ namespace O3d
             return h;
         }
 
+        static IntPtr FromFeature(Feature feature)
+        {
+            if (feature == null) throw new ArgumentNullException("feature");
+            IntPtr h;
+            O3dNative.o3d_kdtree_create_from_feature(out h, feature.Handle);
+            GC.KeepAlive(feature);
+            return h;
+        }
+
+        KDTreeFlann(IntPtr handle) : base(handle) { }
         public KDTreeFlann(PointCloud pc) : base(FromCloud(pc)) { }
+        /// <summary>Tree over the descriptors of <paramref name="feature"/> (dimension Feature.Dimension).</summary>
+        public KDTreeFlann(Feature feature) : base(FromFeature(feature)) { }
         /// <summary>Tree over (N x 3) row-major points.</summary>
         public KDTreeFlann(double[] xyz) : base(FromPoints(xyz)) { }
+
+        /// <summary>Tree over (N x <paramref name="dimension"/>) row-major points.</summary>
+        public static KDTreeFlann FromPointsXd(double[] data, long dimension)
+        {
+            if (data == null) throw new ArgumentNullException("data");
+            ulong d = Checks.Count(dimension, "dimension");
+            if (d == 0 || (ulong)data.Length % d != 0)
+                throw new ArgumentException("data: length " + data.Length + " is not a multiple of dimension " + dimension, "data");
+            IntPtr h;
+            O3dNative.o3d_kdtree_create_from_points_xd(out h, data, d, (ulong)data.Length / d);
+            return new KDTreeFlann(h);
+        }
+
+        /// <summary>Dimension of the indexed points (3 for trees over clouds).</summary>
+        public long Dimension { get { ulong d; O3dNative.o3d_kdtree_dimension(Handle, out d); GC.KeepAlive(this); return (long)d; } }
 
         public long Size { get { ulong n; O3dNative.o3d_kdtree_size(Handle, out n); GC.KeepAlive(this); return (long)n; } }
 
@@ -122,6 +152,29 @@ namespace O3d
             GC.KeepAlive(this);
             return new SearchResult(r);
         }
+
+        /// <summary>Batch search of (M x Dimension) row-major queries of this tree's dimension; the caller disposes the native result.</summary>
+        public SearchResult SearchXd(double[] queries, SearchParam param, int numThreads = 0)
+        {
+            if (queries == null) throw new ArgumentNullException("queries");
+            if (param == null) throw new ArgumentNullException("param");
+            long d = Dimension;
+            if (d == 0 || queries.Length % d != 0)
+                throw new ArgumentException("queries: length " + queries.Length + " is not a multiple of the tree's dimension " + d, "queries");
+            IntPtr r;
+            using (var p = param.ToNative())
+                O3dNative.o3d_kdtree_search_xd(Handle, queries, (ulong)(queries.Length / d), (ulong)d, p, numThreads, out r);
+            GC.KeepAlive(this);
+            return new SearchResult(r);
+        }
+
+        /// <summary>The <paramref name="knn"/> nearest points of each xd query (search_knn_vector_xd), copied into arrays.</summary>
+        public NeighborResult SearchKnnXd(double[] queries, int knn, int numThreads = 0)
+        { return Managed(SearchXd(queries, SearchParam.Knn(knn), numThreads)); }
+        public NeighborResult SearchRadiusXd(double[] queries, double radius, int numThreads = 0)
+        { return Managed(SearchXd(queries, SearchParam.RadiusSearch(radius), numThreads)); }
+        public NeighborResult SearchHybridXd(double[] queries, double radius, int maxNN, int numThreads = 0)
+        { return Managed(SearchXd(queries, SearchParam.Hybrid(radius, maxNN), numThreads)); }
 
         NeighborResult Managed(SearchResult r) { using (r) return r.ToManaged(); }
 

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
 using System;
-using System.Runtime.InteropServices;
 
 namespace O3d
 {
@@ -10,9 +9,15 @@ namespace O3d
         PointToPoint = O3dNative.O3D_ESTIMATION_POINT_TO_POINT,
         /// <summary>The target needs normals.</summary>
         PointToPlane = O3dNative.O3D_ESTIMATION_POINT_TO_PLANE,
+        /// <summary>TransformationEstimationForColoredICP: both clouds need colors, the target normals.</summary>
+        Colored = O3dNative.O3D_ESTIMATION_COLORED,
+        /// <summary>TransformationEstimationForGeneralizedICP (covariances from the clouds, their normals, or estimated).</summary>
+        Generalized = O3dNative.O3D_ESTIMATION_GENERALIZED,
+        /// <summary>TransformationEstimationSymmetric: both clouds need normals.</summary>
+        Symmetric = O3dNative.O3D_ESTIMATION_SYMMETRIC,
     }
 
-    /// <summary>ICP options: estimation method plus ICPConvergenceCriteria (Open3D defaults).</summary>
+    /// <summary>ICP options: estimation method, its parameters and ICPConvergenceCriteria (Open3D defaults).</summary>
     public sealed class IcpOptions
     {
         public EstimationMethod Estimation { get; set; }
@@ -23,6 +28,12 @@ namespace O3d
         public int MaxIteration { get; set; }
         /// <summary>0 = library default.</summary>
         public int NumThreads { get; set; }
+        /// <summary>Robust kernel of point-to-plane, colored, generalized and symmetric ICP (default L2Loss).</summary>
+        public RobustKernel Kernel { get; set; }
+        /// <summary>Colored ICP: weight of the geometric term, in [0, 1] (default 0.968).</summary>
+        public double LambdaGeometric { get; set; }
+        /// <summary>Generalized ICP: covariance regularisation, &gt; 0 (default 1e-3).</summary>
+        public double Epsilon { get; set; }
         /// <summary>
         /// Called on the calling thread after each iteration with iteration/max_iteration; return false to
         /// cancel (the call then throws O3dException with Status.Cancelled). May be null.
@@ -39,6 +50,9 @@ namespace O3d
                 RelativeRmse = o.relative_rmse;
                 MaxIteration = o.max_iteration;
                 NumThreads = o.num_threads;
+                Kernel = new RobustKernel((RobustKernelKind)o.kernel, o.kernel_k);
+                LambdaGeometric = o.lambda_geometric;
+                Epsilon = o.epsilon;
             }
         }
 
@@ -49,24 +63,8 @@ namespace O3d
             return o;
         }
 
-        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
-        internal delegate int ProgressCallbackNative(double fraction, IntPtr userData);
-
-        static readonly ProgressCallbackNative progressTrampoline = ProgressTrampoline;
-
-        [MonoPInvokeCallback(typeof(ProgressCallbackNative))]
-        static int ProgressTrampoline(double fraction, IntPtr userData)
-        {
-            try
-            {
-                var f = (Func<double, bool>)GCHandle.FromIntPtr(userData).Target;
-                return f(fraction) ? 0 : 1;
-            }
-            catch (Exception) { return 1; } // a throwing callback cancels
-        }
-
-        /// <summary>The native options; <paramref name="pin"/> must be freed after the call when allocated.</summary>
-        internal o3d_icp_options_t ToNative(out GCHandle pin)
+        /// <summary>The native options; <paramref name="progress"/> must outlive the native call.</summary>
+        internal o3d_icp_options_t ToNative(ProgressBridge progress)
         {
             var o = NewNative();
             o.estimation = (int)Estimation;
@@ -75,13 +73,13 @@ namespace O3d
             o.relative_rmse = RelativeRmse;
             o.max_iteration = MaxIteration;
             o.num_threads = NumThreads;
-            pin = default(GCHandle);
-            if (Progress != null)
-            {
-                pin = GCHandle.Alloc(Progress);
-                o.progress = Marshal.GetFunctionPointerForDelegate(progressTrampoline);
-                o.user_data = GCHandle.ToIntPtr(pin);
-            }
+            var kernel = Kernel ?? RobustKernel.L2Loss();
+            o.kernel = (int)kernel.Kind;
+            o.kernel_k = kernel.K;
+            o.lambda_geometric = LambdaGeometric;
+            o.epsilon = Epsilon;
+            o.progress = progress.Function;
+            o.user_data = progress.UserData;
             return o;
         }
     }
@@ -126,28 +124,52 @@ namespace O3d
         }
     }
 
-    /// <summary>o3d.pipelines.registration.</summary>
-    public static class Registration
+    /// <summary>o3d.pipelines.registration (local refinement here; features, global registration and pose graphs in
+    /// Feature.cs, RegistrationGlobal.cs and PoseGraph.cs).</summary>
+    public static partial class Registration
     {
-        /// <summary>ICP from <paramref name="source"/> onto <paramref name="target"/>, starting at <paramref name="init"/> (null: identity).</summary>
+        /// <summary>ICP from <paramref name="source"/> onto <paramref name="target"/>, starting at <paramref name="init"/> (null: identity),
+        /// with any estimation (<see cref="IcpOptions.Estimation"/>).</summary>
         public static RegistrationResult RegistrationIcp(PointCloud source, PointCloud target, double maxCorrespondenceDistance,
                                                          double[] init = null, IcpOptions options = null)
         {
+            return Icp(source, target, maxCorrespondenceDistance, init, options, null);
+        }
+
+        /// <summary>Colored ICP (Park et al. 2017): RegistrationIcp with EstimationMethod.Colored, whatever options.Estimation says.</summary>
+        public static RegistrationResult RegistrationColoredIcp(PointCloud source, PointCloud target, double maxCorrespondenceDistance,
+                                                                double[] init = null, IcpOptions options = null)
+        {
+            return Icp(source, target, maxCorrespondenceDistance, init, options, EstimationMethod.Colored);
+        }
+
+        /// <summary>Generalized ICP (Segal et al. 2009): RegistrationIcp with EstimationMethod.Generalized.</summary>
+        public static RegistrationResult RegistrationGeneralizedIcp(PointCloud source, PointCloud target, double maxCorrespondenceDistance,
+                                                                    double[] init = null, IcpOptions options = null)
+        {
+            return Icp(source, target, maxCorrespondenceDistance, init, options, EstimationMethod.Generalized);
+        }
+
+        /// <summary>Symmetric point-to-plane ICP (Rusinkiewicz 2019): RegistrationIcp with EstimationMethod.Symmetric.</summary>
+        public static RegistrationResult RegistrationSymmetricIcp(PointCloud source, PointCloud target, double maxCorrespondenceDistance,
+                                                                  double[] init = null, IcpOptions options = null)
+        {
+            return Icp(source, target, maxCorrespondenceDistance, init, options, EstimationMethod.Symmetric);
+        }
+
+        static RegistrationResult Icp(PointCloud source, PointCloud target, double maxCorrespondenceDistance, double[] init,
+                                      IcpOptions options, EstimationMethod? estimation)
+        {
             if (source == null) throw new ArgumentNullException("source");
             if (target == null) throw new ArgumentNullException("target");
-            GCHandle pin;
+            options = options ?? new IcpOptions();
             IntPtr r;
-            using (var o = (options ?? new IcpOptions()).ToNative(out pin))
+            using (var progress = new ProgressBridge(options.Progress))
+            using (var o = options.ToNative(progress))
             {
-                try
-                {
-                    O3dNative.o3d_register_icp(out r, source.Handle, target.Handle, maxCorrespondenceDistance,
-                                               Checks.Fixed(init, 16, "init", true), o);
-                }
-                finally
-                {
-                    if (pin.IsAllocated) pin.Free();
-                }
+                if (estimation.HasValue) o.estimation = (int)estimation.Value;
+                O3dNative.o3d_register_icp(out r, source.Handle, target.Handle, maxCorrespondenceDistance,
+                                           Checks.Fixed(init, 16, "init", true), o);
             }
             GC.KeepAlive(source); GC.KeepAlive(target);
             return RegistrationResult.FromNative(r);

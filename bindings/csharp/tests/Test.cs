@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Assert-based tests of the O3d C# binding. Prints "N passed, M failed" last; exit code 1 on failure.
-//   mcs -target:exe -out:Test.exe -r:O3d.dll Test.cs && mono Test.exe
+//   mcs -target:exe -out:Test.exe -r:O3d.dll Test.cs RegistrationPipelineTest.cs && mono Test.exe
 // Data: $O3D_TEST_DATA (else $O3D_TEST_DATA_DEFAULT, else ../shared/data); tests needing it are
 // skipped when it is missing, unless O3D_REQUIRE_TEST_DATA=1 (then they fail).
 using System;
@@ -10,7 +10,7 @@ using System.Linq;
 using System.Runtime.InteropServices;
 using O3d;
 
-static class Test
+static partial class Test
 {
     static int passed, failed, skipped;
 
@@ -524,6 +524,7 @@ static class Test
 
         GeometryTests();
         ShapesTests();
+        RegistrationPipelineTests(); // RegistrationPipelineTest.cs
 
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");

@@ -257,4 +257,36 @@ public final class IO {
     public static void writePinholeCameraTrajectory(String path, PinholeCameraTrajectory trajectory) {
         writePinholeCameraTrajectory(path, trajectory, null);
     }
+
+    // ---- features and pose graphs ---------------------------------------------------------------
+
+    /** Read Open3D's binary feature file (int32 dimension, int32 num, num x dimension float64); bad files throw PARSE. */
+    public static Feature readFeature(String path) {
+        Objects.requireNonNull(path, "path");
+        long[] h = new long[1];
+        O3dNative.o3d_io_read_feature(h, path);
+        return new Feature(h[0]);
+    }
+
+    /** Write {@code feature} in the layout readFeature reads. */
+    public static void writeFeature(String path, Feature feature) {
+        Objects.requireNonNull(path, "path");
+        O3dNative.o3d_io_write_feature(path, feature.handle());
+        Reference.reachabilityFence(feature);
+    }
+
+    /** Read Open3D's JSON pose graph. */
+    public static PoseGraph readPoseGraph(String path) {
+        Objects.requireNonNull(path, "path");
+        long[] h = new long[1];
+        O3dNative.o3d_io_read_pose_graph(h, path);
+        return new PoseGraph(h[0]);
+    }
+
+    /** Write {@code graph} in Open3D's JSON layout. */
+    public static void writePoseGraph(String path, PoseGraph graph) {
+        Objects.requireNonNull(path, "path");
+        O3dNative.o3d_io_write_pose_graph(path, graph.handle());
+        Reference.reachabilityFence(graph);
+    }
 }

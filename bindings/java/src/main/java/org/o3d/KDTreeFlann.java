@@ -3,7 +3,10 @@ package org.o3d;
 
 import java.lang.ref.Reference;
 
-/** KD-tree over 3-D points (o3d.geometry.KDTreeFlann). It copies the points it indexes. */
+/**
+ * KD-tree (o3d.geometry.KDTreeFlann) over 3-D points, or over points of any dimension (a {@link Feature}'s
+ * descriptors, {@link #fromPointsXd}) searched with the *Xd methods. It copies the points it indexes.
+ */
 public final class KDTreeFlann extends NativeResource {
     private KDTreeFlann(long handle) {
         super(handle, O3dNative::o3d_kdtree_destroy);
@@ -22,8 +25,38 @@ public final class KDTreeFlann extends NativeResource {
         return h[0];
     }
 
+    private static long fromFeature(Feature feature) {
+        long[] h = new long[1];
+        O3dNative.o3d_kdtree_create_from_feature(h, feature.handle());
+        Reference.reachabilityFence(feature);
+        return h[0];
+    }
+
     public KDTreeFlann(PointCloud pc) {
         this(fromCloud(pc));
+    }
+
+    /** Tree over the descriptors of {@code feature} (dimension feature.dimension()). */
+    public KDTreeFlann(Feature feature) {
+        this(fromFeature(feature));
+    }
+
+    /** Tree over (N x {@code dimension}) row-major points. */
+    public static KDTreeFlann fromPointsXd(double[] data, long dimension) {
+        java.util.Objects.requireNonNull(data, "data");
+        if (dimension <= 0 || data.length % dimension != 0)
+            throw new IllegalArgumentException("data: length " + data.length + " is not a multiple of dimension " + dimension);
+        long[] h = new long[1];
+        O3dNative.o3d_kdtree_create_from_points_xd(h, data, dimension, data.length / dimension);
+        return new KDTreeFlann(h[0]);
+    }
+
+    /** Dimension of the indexed points (3 for trees over clouds). */
+    public long dimension() {
+        long[] d = new long[1];
+        O3dNative.o3d_kdtree_dimension(handle(), d);
+        Reference.reachabilityFence(this);
+        return d[0];
     }
 
     /** Tree over (N x 3) row-major points. */
@@ -64,6 +97,30 @@ public final class KDTreeFlann extends NativeResource {
         }
         Reference.reachabilityFence(this);
         return new SearchResult(r[0]);
+    }
+
+    /** Batch search of (M x dimension()) row-major queries; the caller closes the native result. */
+    public SearchResult searchXd(double[] queries, SearchParam param, int numThreads) {
+        java.util.Objects.requireNonNull(queries, "queries");
+        long d = dimension();
+        if (d == 0 || queries.length % d != 0)
+            throw new IllegalArgumentException("queries: length " + queries.length + " is not a multiple of the tree's dimension " + d);
+        long[] r = new long[1];
+        o3d_search_param_t p = param.toNative();
+        try {
+            O3dNative.o3d_kdtree_search_xd(handle(), queries, queries.length / d, d, p, numThreads, r);
+        } finally {
+            p.delete();
+        }
+        Reference.reachabilityFence(this);
+        return new SearchResult(r[0]);
+    }
+
+    /** The {@code knn} nearest points of each xd query (search_knn_vector_xd), copied into arrays. */
+    public NeighborResult searchKnnXd(double[] queries, int knn) { return managed(searchXd(queries, SearchParam.knn(knn), 0)); }
+    public NeighborResult searchRadiusXd(double[] queries, double radius) { return managed(searchXd(queries, SearchParam.radius(radius), 0)); }
+    public NeighborResult searchHybridXd(double[] queries, double radius, int maxNN) {
+        return managed(searchXd(queries, SearchParam.hybrid(radius, maxNN), 0));
     }
 
     private static NeighborResult managed(SearchResult r) {

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// @file kdtree.hpp
-/// @brief o3dpp::KDTreeFlann and o3dpp::SearchResult (flat batch search results).
+/// @brief o3dpp::KDTreeFlann (over 3-D points or points of any dimension, e.g. a Feature) and
+/// o3dpp::SearchResult (flat batch search results).
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "o3d/feature.h"
 #include "o3d/kdtree.h"
 #include "o3dpp/error.hpp"
+#include "o3dpp/feature.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -89,7 +93,8 @@ private:
     UniqueHandle<o3d_search_result_t, &o3d_search_result_destroy> h_;
 };
 
-/// @brief KD-tree over 3-D points (copies them: independent of the source cloud). Move-only.
+/// @brief KD-tree over 3-D points, or over points of any dimension (a Feature, from_points_xd).
+/// Copies them: independent of its source. Move-only.
 class KDTreeFlann {
 public:
     explicit KDTreeFlann(const PointCloud& cloud) {
@@ -104,6 +109,22 @@ public:
     }
     explicit KDTreeFlann(const std::vector<Vec3>& points)
         : KDTreeFlann(points.empty() ? nullptr : points.front().data(), points.size()) {}
+    /// @brief Over the descriptors of `feature` (copied). @see o3d.geometry.KDTreeFlann(feature)
+    explicit KDTreeFlann(const Feature& feature) {
+        o3d_kdtree_t* t = nullptr;
+        check(o3d_kdtree_create_from_feature(&t, feature.get()));
+        h_.reset(t);
+    }
+    /// @brief Over `n` points of `dimension` doubles each, one after the other (copied).
+    static KDTreeFlann from_points_xd(const double* data, std::size_t dimension, std::size_t n) {
+        o3d_kdtree_t* t = nullptr;
+        check(o3d_kdtree_create_from_points_xd(&t, data, dimension, n));
+        return KDTreeFlann(Owned{}, t);
+    }
+    /// @brief As above from `data.size() / dimension` points (the size must be a multiple of it).
+    static KDTreeFlann from_points_xd(const std::vector<double>& data, std::size_t dimension) {
+        return from_points_xd(data.data(), dimension, rows_of(data.size(), dimension));
+    }
 
     o3d_kdtree_t* get() const noexcept { return h_.get(); }
     o3d_kdtree_t* release() noexcept { return h_.release(); }
@@ -144,7 +165,55 @@ public:
         return search(queries, SearchParam::Hybrid(radius, max_nn), num_threads);
     }
 
+    /// @brief Dimension of the indexed points (3 for trees over clouds).
+    std::size_t dimension() const {
+        size_t d = 0;
+        check(o3d_kdtree_dimension(get(), &d));
+        return d;
+    }
+    /// @brief Batch search of `num_queries` rows of `dimension` doubles (the tree's dimension).
+    /// @see KDTreeFlann.search_knn_vector_xd
+    SearchResult search_xd(const double* queries, std::size_t num_queries, std::size_t dimension,
+                           const SearchParam& param, int num_threads = 0) const {
+        const o3d_search_param_t c = param.to_c();
+        o3d_search_result_t* r = nullptr;
+        check(o3d_kdtree_search_xd(get(), queries, num_queries, dimension, &c, num_threads, &r));
+        return SearchResult(r);
+    }
+    /// @brief As above with `queries.size() / dimension` rows.
+    SearchResult search_xd(const std::vector<double>& queries, std::size_t dimension, const SearchParam& param,
+                           int num_threads = 0) const {
+        return search_xd(queries.data(), rows_of(queries.size(), dimension), dimension, param, num_threads);
+    }
+    /// @brief Every descriptor of `feature` as a query.
+    SearchResult search_xd(const Feature& feature, const SearchParam& param, int num_threads = 0) const {
+        const Span<const double> d = feature.data();
+        return search_xd(d.data(), feature.num(), feature.dimension(), param, num_threads);
+    }
+    /// @brief The `knn` nearest points of one query of any dimension (Open3D search_knn_vector_xd).
+    SearchResult search_knn_vector_xd(const std::vector<double>& query, int knn) const {
+        return search_xd(query.data(), 1, query.size(), SearchParam::Knn(knn));
+    }
+    /// @brief All points within `radius` of one query (Open3D search_radius_vector_xd).
+    SearchResult search_radius_vector_xd(const std::vector<double>& query, double radius) const {
+        return search_xd(query.data(), 1, query.size(), SearchParam::Radius(radius));
+    }
+    /// @brief At most `max_nn` nearest points within `radius` (Open3D search_hybrid_vector_xd).
+    SearchResult search_hybrid_vector_xd(const std::vector<double>& query, double radius, int max_nn) const {
+        return search_xd(query.data(), 1, query.size(), SearchParam::Hybrid(radius, max_nn));
+    }
+
 private:
+    struct Owned {};
+    KDTreeFlann(Owned, o3d_kdtree_t* owned) : h_(owned) {}
+    static std::size_t rows_of(std::size_t size, std::size_t dimension) {
+        if (dimension == 0 ? size != 0 : size % dimension != 0)
+            throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::KDTreeFlann: " + std::to_string(size) +
+                                                        " values are not whole points of dimension " +
+                                                        std::to_string(dimension));
+        return dimension == 0 ? 0 : size / dimension;
+    }
+
     UniqueHandle<o3d_kdtree_t, &o3d_kdtree_destroy> h_;
 };
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// @file registration.hpp
-/// @brief ICP, registration evaluation and the information matrix.
+/// @brief ICP (point-to-point, point-to-plane, colored, generalized, symmetric, with robust kernels),
+/// registration evaluation and the information matrix. Global registration: global_registration.hpp;
+/// pose graphs: posegraph.hpp.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -17,7 +19,39 @@ namespace o3dpp {
 
 enum class Estimation : int32_t {
     PointToPoint = O3D_ESTIMATION_POINT_TO_POINT,
-    PointToPlane = O3D_ESTIMATION_POINT_TO_PLANE
+    PointToPlane = O3D_ESTIMATION_POINT_TO_PLANE,  ///< the target needs normals
+    Colored = O3D_ESTIMATION_COLORED,              ///< both need colors, the target normals (Park et al. 2017)
+    Generalized = O3D_ESTIMATION_GENERALIZED,      ///< Segal et al. 2009
+    Symmetric = O3D_ESTIMATION_SYMMETRIC           ///< both need normals (Rusinkiewicz 2019)
+};
+
+/// @brief Robust kernel (M-estimator) weighting each residual r, with scale k (Open3D's L2Loss(),
+/// TukeyLoss(k), ...). Used by point-to-plane, colored, generalized and symmetric ICP.
+struct RobustKernel {
+    enum class Type : int32_t {
+        L2 = O3D_KERNEL_L2,          ///< w = 1
+        L1 = O3D_KERNEL_L1,          ///< w = 1 / |r|
+        Huber = O3D_KERNEL_HUBER,    ///< w = 1 if |r| <= k else k / |r|
+        Cauchy = O3D_KERNEL_CAUCHY,  ///< w = 1 / (1 + (r / k)^2)
+        GM = O3D_KERNEL_GM,          ///< w = k / (k + r^2)^2
+        Tukey = O3D_KERNEL_TUKEY     ///< w = (1 - (r / k)^2)^2 if |r| <= k else 0
+    };
+    Type type = Type::L2;
+    double k = 1.0;
+
+    static RobustKernel L2() { return {Type::L2, 1.0}; }
+    static RobustKernel L1() { return {Type::L1, 1.0}; }
+    static RobustKernel Huber(double k) { return {Type::Huber, k}; }
+    static RobustKernel Cauchy(double k) { return {Type::Cauchy, k}; }
+    static RobustKernel GM(double k) { return {Type::GM, k}; }
+    static RobustKernel Tukey(double k) { return {Type::Tukey, k}; }
+
+    /// @brief The weight given to `residual`. @see RobustKernel.weight
+    double weight(double residual) const {
+        double w = 0;
+        check(o3d_robust_kernel_weight(static_cast<int32_t>(type), k, residual, &w));
+        return w;
+    }
 };
 
 /// @brief ICP options (estimation method + ICPConvergenceCriteria), Open3D defaults.
@@ -28,6 +62,12 @@ struct IcpOptions {
     double relative_rmse = 1e-6;
     int max_iteration = 30;
     int num_threads = 0;
+    /// @brief Robust kernel of point-to-plane, colored, generalized and symmetric ICP.
+    RobustKernel kernel = RobustKernel::L2();
+    /// @brief Colored ICP: weight of the geometric term, in [0, 1].
+    double lambda_geometric = 0.968;
+    /// @brief Generalized ICP: covariance regularisation (> 0).
+    double epsilon = 1e-3;
     /// @brief Called after each iteration; return false to cancel (Error with O3D_ERROR_CANCELLED).
     /// An exception it throws cancels the call and is rethrown to the caller.
     ProgressCallback progress;
@@ -42,6 +82,10 @@ struct IcpOptions {
         c.relative_rmse = relative_rmse;
         c.max_iteration = max_iteration;
         c.num_threads = num_threads;
+        c.kernel = static_cast<int32_t>(kernel.type);
+        c.kernel_k = kernel.k;
+        c.lambda_geometric = lambda_geometric;
+        c.epsilon = epsilon;
         return c;
     }
 };
@@ -100,6 +144,36 @@ inline RegistrationResult registration_icp(const PointCloud& source, const Point
     detail::check_progress(
         o3d_register_icp(&r, source.get(), target.get(), max_correspondence_distance, init.data(), &c), ctx);
     return RegistrationResult(r);
+}
+
+namespace detail {
+inline RegistrationResult icp_as(Estimation estimation, const PointCloud& source, const PointCloud& target,
+                                 double max_correspondence_distance, const Mat4& init, IcpOptions options) {
+    options.estimation = estimation;
+    return registration_icp(source, target, max_correspondence_distance, init, options);
+}
+}  // namespace detail
+
+/// @brief Colored ICP (options.estimation is ignored). @see o3d.pipelines.registration.registration_colored_icp
+inline RegistrationResult registration_colored_icp(const PointCloud& source, const PointCloud& target,
+                                                   double max_correspondence_distance,
+                                                   const Mat4& init = identity4(), const IcpOptions& options = {}) {
+    return detail::icp_as(Estimation::Colored, source, target, max_correspondence_distance, init, options);
+}
+/// @brief Generalized ICP (options.estimation is ignored).
+/// @see o3d.pipelines.registration.registration_generalized_icp
+inline RegistrationResult registration_generalized_icp(const PointCloud& source, const PointCloud& target,
+                                                       double max_correspondence_distance,
+                                                       const Mat4& init = identity4(),
+                                                       const IcpOptions& options = {}) {
+    return detail::icp_as(Estimation::Generalized, source, target, max_correspondence_distance, init, options);
+}
+/// @brief Symmetric point-to-plane ICP (options.estimation is ignored).
+/// @see o3d.pipelines.registration.registration_symmetric_icp
+inline RegistrationResult registration_symmetric_icp(const PointCloud& source, const PointCloud& target,
+                                                     double max_correspondence_distance,
+                                                     const Mat4& init = identity4(), const IcpOptions& options = {}) {
+    return detail::icp_as(Estimation::Symmetric, source, target, max_correspondence_distance, init, options);
 }
 
 /// @brief Fitness / RMSE / correspondences of `source` moved by `transformation`.

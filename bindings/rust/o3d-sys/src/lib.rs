@@ -412,6 +412,83 @@ extern "C" {
 }
 
 // ---------------------------------------------------------------------------------------------
+// feature.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque feature matrix (`o3d_feature_t`): `dimension` x `num` doubles, descriptor by descriptor.
+#[repr(C)]
+pub struct o3d_feature {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_feature_t = o3d_feature;
+
+extern "C" {
+    pub fn o3d_feature_create(out: *mut *mut o3d_feature_t, dimension: usize, num: usize) -> o3d_status;
+    pub fn o3d_feature_create_from_data(
+        out: *mut *mut o3d_feature_t,
+        data: *const f64,
+        dimension: usize,
+        num: usize,
+    ) -> o3d_status;
+    pub fn o3d_feature_destroy(feature: *mut o3d_feature_t);
+    pub fn o3d_feature_clone(out: *mut *mut o3d_feature_t, feature: *const o3d_feature_t) -> o3d_status;
+    pub fn o3d_feature_dimension(feature: *const o3d_feature_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_feature_num(feature: *const o3d_feature_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_feature_resize(feature: *mut o3d_feature_t, dimension: usize, num: usize) -> o3d_status;
+    pub fn o3d_feature_data(feature: *mut o3d_feature_t, out_data: *mut *mut f64) -> o3d_status;
+    pub fn o3d_feature_get_data(feature: *const o3d_feature_t, out: *mut f64, capacity: usize) -> o3d_status;
+    pub fn o3d_feature_select_by_index(
+        out: *mut *mut o3d_feature_t,
+        feature: *const o3d_feature_t,
+        indices: *const i64,
+        n: usize,
+        invert: i32,
+    ) -> o3d_status;
+
+    pub fn o3d_compute_fpfh_feature(
+        out: *mut *mut o3d_feature_t,
+        pc: *const o3d_pointcloud_t,
+        param: *const o3d_search_param_t,
+        indices: *const i64,
+        n_indices: usize,
+        num_threads: i32,
+    ) -> o3d_status;
+
+    pub fn o3d_correspondences_from_features(
+        source: *const o3d_feature_t,
+        target: *const o3d_feature_t,
+        mutual_filter: i32,
+        mutual_consistency_ratio: f64,
+        num_threads: i32,
+        out: *mut i32,
+        capacity: usize,
+        out_n: *mut usize,
+    ) -> o3d_status;
+
+    pub fn o3d_io_read_feature(out: *mut *mut o3d_feature_t, path: *const c_char) -> o3d_status;
+    pub fn o3d_io_write_feature(path: *const c_char, feature: *const o3d_feature_t) -> o3d_status;
+
+    pub fn o3d_kdtree_create_from_feature(out: *mut *mut o3d_kdtree_t, feature: *const o3d_feature_t) -> o3d_status;
+    pub fn o3d_kdtree_create_from_points_xd(
+        out: *mut *mut o3d_kdtree_t,
+        data: *const f64,
+        dimension: usize,
+        n: usize,
+    ) -> o3d_status;
+    pub fn o3d_kdtree_dimension(tree: *const o3d_kdtree_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_kdtree_search_xd(
+        tree: *const o3d_kdtree_t,
+        queries: *const f64,
+        num_queries: usize,
+        dimension: usize,
+        param: *const o3d_search_param_t,
+        num_threads: i32,
+        out: *mut *mut o3d_search_result_t,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
 // io.h
 // ---------------------------------------------------------------------------------------------
 
@@ -575,6 +652,16 @@ extern "C" {
 
 pub const O3D_ESTIMATION_POINT_TO_POINT: i32 = 0;
 pub const O3D_ESTIMATION_POINT_TO_PLANE: i32 = 1;
+pub const O3D_ESTIMATION_COLORED: i32 = 2;
+pub const O3D_ESTIMATION_GENERALIZED: i32 = 3;
+pub const O3D_ESTIMATION_SYMMETRIC: i32 = 4;
+
+pub const O3D_KERNEL_L2: i32 = 0;
+pub const O3D_KERNEL_L1: i32 = 1;
+pub const O3D_KERNEL_HUBER: i32 = 2;
+pub const O3D_KERNEL_CAUCHY: i32 = 3;
+pub const O3D_KERNEL_GM: i32 = 4;
+pub const O3D_KERNEL_TUKEY: i32 = 5;
 
 /// ICP options (`o3d_icp_options_t`).
 #[repr(C)]
@@ -589,6 +676,10 @@ pub struct o3d_icp_options {
     pub num_threads: i32,
     pub progress: o3d_progress_callback,
     pub user_data: *mut c_void,
+    pub kernel: i32,
+    pub kernel_k: f64,
+    pub lambda_geometric: f64,
+    pub epsilon: f64,
 }
 pub type o3d_icp_options_t = o3d_icp_options;
 
@@ -600,8 +691,63 @@ pub struct o3d_registration_result {
 }
 pub type o3d_registration_result_t = o3d_registration_result;
 
+pub const O3D_CHECKER_EDGE_LENGTH: i32 = 0;
+pub const O3D_CHECKER_DISTANCE: i32 = 1;
+pub const O3D_CHECKER_NORMAL: i32 = 2;
+
+/// Correspondence checker (`o3d_correspondence_checker_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct o3d_correspondence_checker {
+    pub struct_size: u32,
+    pub kind: i32,
+    pub threshold: f64,
+}
+pub type o3d_correspondence_checker_t = o3d_correspondence_checker;
+
+/// RANSAC options (`o3d_ransac_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct o3d_ransac_options {
+    pub struct_size: u32,
+    pub estimation: i32,
+    pub with_scaling: i32,
+    pub ransac_n: i32,
+    pub max_iteration: i32,
+    pub confidence: f64,
+    pub mutual_filter: i32,
+    pub use_seed: i32,
+    pub seed: u64,
+    pub num_threads: i32,
+    pub progress: o3d_progress_callback,
+    pub user_data: *mut c_void,
+}
+pub type o3d_ransac_options_t = o3d_ransac_options;
+
+/// Fast Global Registration options (`o3d_fgr_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct o3d_fgr_options {
+    pub struct_size: u32,
+    pub division_factor: f64,
+    pub use_absolute_scale: i32,
+    pub decrease_mu: i32,
+    pub maximum_correspondence_distance: f64,
+    pub iteration_number: i32,
+    pub tuple_scale: f64,
+    pub maximum_tuple_count: i32,
+    pub tuple_test: i32,
+    pub use_seed: i32,
+    pub seed: u64,
+    pub num_threads: i32,
+    pub progress: o3d_progress_callback,
+    pub user_data: *mut c_void,
+}
+pub type o3d_fgr_options_t = o3d_fgr_options;
+
 extern "C" {
     pub fn o3d_icp_options_init(opts: *mut o3d_icp_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_robust_kernel_weight(kernel: i32, k: f64, residual: f64, out: *mut f64) -> o3d_status;
 
     pub fn o3d_register_icp(
         out: *mut *mut o3d_registration_result_t,
@@ -641,6 +787,166 @@ extern "C" {
         out: *mut i32,
         capacity: usize,
         out_n: *mut usize,
+    ) -> o3d_status;
+
+    pub fn o3d_correspondence_checker_init(
+        checker: *mut o3d_correspondence_checker_t,
+        struct_size: u32,
+        kind: i32,
+    ) -> o3d_status;
+    pub fn o3d_correspondence_checker_check(
+        checker: *const o3d_correspondence_checker_t,
+        source: *const o3d_pointcloud_t,
+        target: *const o3d_pointcloud_t,
+        corres: *const i32,
+        num_corres: usize,
+        transformation: *const f64,
+        out_passed: *mut i32,
+    ) -> o3d_status;
+
+    pub fn o3d_ransac_options_init(opts: *mut o3d_ransac_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_random_seed(seed: u64) -> o3d_status;
+    pub fn o3d_register_ransac_based_on_feature_matching(
+        out: *mut *mut o3d_registration_result_t,
+        source: *const o3d_pointcloud_t,
+        target: *const o3d_pointcloud_t,
+        source_feature: *const o3d_feature_t,
+        target_feature: *const o3d_feature_t,
+        max_correspondence_distance: f64,
+        checkers: *const o3d_correspondence_checker_t,
+        num_checkers: usize,
+        opts: *const o3d_ransac_options_t,
+    ) -> o3d_status;
+    pub fn o3d_register_ransac_based_on_correspondence(
+        out: *mut *mut o3d_registration_result_t,
+        source: *const o3d_pointcloud_t,
+        target: *const o3d_pointcloud_t,
+        corres: *const i32,
+        num_corres: usize,
+        max_correspondence_distance: f64,
+        checkers: *const o3d_correspondence_checker_t,
+        num_checkers: usize,
+        opts: *const o3d_ransac_options_t,
+    ) -> o3d_status;
+
+    pub fn o3d_fgr_options_init(opts: *mut o3d_fgr_options_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_register_fgr_based_on_feature_matching(
+        out: *mut *mut o3d_registration_result_t,
+        source: *const o3d_pointcloud_t,
+        target: *const o3d_pointcloud_t,
+        source_feature: *const o3d_feature_t,
+        target_feature: *const o3d_feature_t,
+        opts: *const o3d_fgr_options_t,
+    ) -> o3d_status;
+    pub fn o3d_register_fgr_based_on_correspondence(
+        out: *mut *mut o3d_registration_result_t,
+        source: *const o3d_pointcloud_t,
+        target: *const o3d_pointcloud_t,
+        corres: *const i32,
+        num_corres: usize,
+        opts: *const o3d_fgr_options_t,
+    ) -> o3d_status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// posegraph.h
+// ---------------------------------------------------------------------------------------------
+
+/// Opaque pose graph (`o3d_pose_graph_t`).
+#[repr(C)]
+pub struct o3d_pose_graph {
+    _private: [u8; 0],
+    _marker: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+}
+pub type o3d_pose_graph_t = o3d_pose_graph;
+
+/// Pose-graph edge (`o3d_pose_graph_edge_t`): row-major 4x4 transformation and 6x6 information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct o3d_pose_graph_edge {
+    pub struct_size: u32,
+    pub source_node_id: i32,
+    pub target_node_id: i32,
+    pub transformation: [f64; 16],
+    pub information: [f64; 36],
+    pub uncertain: i32,
+    pub confidence: f64,
+}
+pub type o3d_pose_graph_edge_t = o3d_pose_graph_edge;
+
+pub const O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON: i32 = 0;
+pub const O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT: i32 = 1;
+
+/// Global optimization options (`o3d_global_optimization_options_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct o3d_global_optimization_options {
+    pub struct_size: u32,
+    pub method: i32,
+    pub max_iteration: i32,
+    pub min_relative_increment: f64,
+    pub min_relative_residual_increment: f64,
+    pub min_right_term: f64,
+    pub min_residual: f64,
+    pub max_iteration_lm: i32,
+    pub upper_scale_factor: f64,
+    pub lower_scale_factor: f64,
+    pub max_correspondence_distance: f64,
+    pub edge_prune_threshold: f64,
+    pub preference_loop_closure: f64,
+    pub reference_node: i32,
+    pub num_threads: i32,
+    pub progress: o3d_progress_callback,
+    pub user_data: *mut c_void,
+}
+pub type o3d_global_optimization_options_t = o3d_global_optimization_options;
+
+/// What a global optimization did (`o3d_global_optimization_summary_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct o3d_global_optimization_summary {
+    pub struct_size: u32,
+    pub iterations: i32,
+    pub initial_residual: f64,
+    pub final_residual: f64,
+    pub pruned_edges: i32,
+}
+pub type o3d_global_optimization_summary_t = o3d_global_optimization_summary;
+
+extern "C" {
+    pub fn o3d_pose_graph_edge_init(edge: *mut o3d_pose_graph_edge_t, struct_size: u32) -> o3d_status;
+    pub fn o3d_pose_graph_create(out: *mut *mut o3d_pose_graph_t) -> o3d_status;
+    pub fn o3d_pose_graph_destroy(graph: *mut o3d_pose_graph_t);
+    pub fn o3d_pose_graph_clone(out: *mut *mut o3d_pose_graph_t, graph: *const o3d_pose_graph_t) -> o3d_status;
+    pub fn o3d_pose_graph_num_nodes(graph: *const o3d_pose_graph_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_pose_graph_num_edges(graph: *const o3d_pose_graph_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_pose_graph_add_node(graph: *mut o3d_pose_graph_t, pose: *const f64) -> o3d_status;
+    pub fn o3d_pose_graph_get_node(graph: *const o3d_pose_graph_t, index: usize, out_pose: *mut f64) -> o3d_status;
+    pub fn o3d_pose_graph_set_node(graph: *mut o3d_pose_graph_t, index: usize, pose: *const f64) -> o3d_status;
+    pub fn o3d_pose_graph_add_edge(graph: *mut o3d_pose_graph_t, edge: *const o3d_pose_graph_edge_t) -> o3d_status;
+    pub fn o3d_pose_graph_get_edge(
+        graph: *const o3d_pose_graph_t,
+        index: usize,
+        out_edge: *mut o3d_pose_graph_edge_t,
+    ) -> o3d_status;
+    pub fn o3d_pose_graph_set_edge(
+        graph: *mut o3d_pose_graph_t,
+        index: usize,
+        edge: *const o3d_pose_graph_edge_t,
+    ) -> o3d_status;
+    pub fn o3d_pose_graph_clear(graph: *mut o3d_pose_graph_t) -> o3d_status;
+
+    pub fn o3d_io_read_pose_graph(out: *mut *mut o3d_pose_graph_t, path: *const c_char) -> o3d_status;
+    pub fn o3d_io_write_pose_graph(path: *const c_char, graph: *const o3d_pose_graph_t) -> o3d_status;
+
+    pub fn o3d_global_optimization_options_init(
+        opts: *mut o3d_global_optimization_options_t,
+        struct_size: u32,
+    ) -> o3d_status;
+    pub fn o3d_global_optimization(
+        graph: *mut o3d_pose_graph_t,
+        opts: *const o3d_global_optimization_options_t,
+        summary: *mut o3d_global_optimization_summary_t,
     ) -> o3d_status;
 }
 

@@ -30,7 +30,7 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_write_options_t, struct_size)", offset_of!(o3d_write_options_t, struct_size), 0),
         ("offsetof(o3d_write_options_t, write_ascii)", offset_of!(o3d_write_options_t, write_ascii), 4),
         ("offsetof(o3d_write_options_t, compressed)", offset_of!(o3d_write_options_t, compressed), 8),
-        ("sizeof(o3d_icp_options_t)", size_of::<o3d_icp_options_t>(), 56),
+        ("sizeof(o3d_icp_options_t)", size_of::<o3d_icp_options_t>(), 88),
         ("_Alignof(o3d_icp_options_t)", align_of::<o3d_icp_options_t>(), 8),
         ("offsetof(o3d_icp_options_t, struct_size)", offset_of!(o3d_icp_options_t, struct_size), 0),
         ("offsetof(o3d_icp_options_t, estimation)", offset_of!(o3d_icp_options_t, estimation), 4),
@@ -41,6 +41,176 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_icp_options_t, num_threads)", offset_of!(o3d_icp_options_t, num_threads), 36),
         ("offsetof(o3d_icp_options_t, progress)", offset_of!(o3d_icp_options_t, progress), 40),
         ("offsetof(o3d_icp_options_t, user_data)", offset_of!(o3d_icp_options_t, user_data), 48),
+        ("offsetof(o3d_icp_options_t, kernel)", offset_of!(o3d_icp_options_t, kernel), 56),
+        ("offsetof(o3d_icp_options_t, kernel_k)", offset_of!(o3d_icp_options_t, kernel_k), 64),
+        ("offsetof(o3d_icp_options_t, lambda_geometric)", offset_of!(o3d_icp_options_t, lambda_geometric), 72),
+        ("offsetof(o3d_icp_options_t, epsilon)", offset_of!(o3d_icp_options_t, epsilon), 80),
+        ("sizeof(o3d_correspondence_checker_t)", size_of::<o3d_correspondence_checker_t>(), 16),
+        ("_Alignof(o3d_correspondence_checker_t)", align_of::<o3d_correspondence_checker_t>(), 8),
+        (
+            "offsetof(o3d_correspondence_checker_t, struct_size)",
+            offset_of!(o3d_correspondence_checker_t, struct_size),
+            0,
+        ),
+        ("offsetof(o3d_correspondence_checker_t, kind)", offset_of!(o3d_correspondence_checker_t, kind), 4),
+        ("offsetof(o3d_correspondence_checker_t, threshold)", offset_of!(o3d_correspondence_checker_t, threshold), 8),
+        ("sizeof(o3d_ransac_options_t)", size_of::<o3d_ransac_options_t>(), 72),
+        ("_Alignof(o3d_ransac_options_t)", align_of::<o3d_ransac_options_t>(), 8),
+        ("offsetof(o3d_ransac_options_t, struct_size)", offset_of!(o3d_ransac_options_t, struct_size), 0),
+        ("offsetof(o3d_ransac_options_t, estimation)", offset_of!(o3d_ransac_options_t, estimation), 4),
+        ("offsetof(o3d_ransac_options_t, with_scaling)", offset_of!(o3d_ransac_options_t, with_scaling), 8),
+        ("offsetof(o3d_ransac_options_t, ransac_n)", offset_of!(o3d_ransac_options_t, ransac_n), 12),
+        ("offsetof(o3d_ransac_options_t, max_iteration)", offset_of!(o3d_ransac_options_t, max_iteration), 16),
+        ("offsetof(o3d_ransac_options_t, confidence)", offset_of!(o3d_ransac_options_t, confidence), 24),
+        ("offsetof(o3d_ransac_options_t, mutual_filter)", offset_of!(o3d_ransac_options_t, mutual_filter), 32),
+        ("offsetof(o3d_ransac_options_t, use_seed)", offset_of!(o3d_ransac_options_t, use_seed), 36),
+        ("offsetof(o3d_ransac_options_t, seed)", offset_of!(o3d_ransac_options_t, seed), 40),
+        ("offsetof(o3d_ransac_options_t, num_threads)", offset_of!(o3d_ransac_options_t, num_threads), 48),
+        ("offsetof(o3d_ransac_options_t, progress)", offset_of!(o3d_ransac_options_t, progress), 56),
+        ("offsetof(o3d_ransac_options_t, user_data)", offset_of!(o3d_ransac_options_t, user_data), 64),
+        ("sizeof(o3d_fgr_options_t)", size_of::<o3d_fgr_options_t>(), 96),
+        ("_Alignof(o3d_fgr_options_t)", align_of::<o3d_fgr_options_t>(), 8),
+        ("offsetof(o3d_fgr_options_t, struct_size)", offset_of!(o3d_fgr_options_t, struct_size), 0),
+        ("offsetof(o3d_fgr_options_t, division_factor)", offset_of!(o3d_fgr_options_t, division_factor), 8),
+        ("offsetof(o3d_fgr_options_t, use_absolute_scale)", offset_of!(o3d_fgr_options_t, use_absolute_scale), 16),
+        ("offsetof(o3d_fgr_options_t, decrease_mu)", offset_of!(o3d_fgr_options_t, decrease_mu), 20),
+        (
+            "offsetof(o3d_fgr_options_t, maximum_correspondence_distance)",
+            offset_of!(o3d_fgr_options_t, maximum_correspondence_distance),
+            24,
+        ),
+        ("offsetof(o3d_fgr_options_t, iteration_number)", offset_of!(o3d_fgr_options_t, iteration_number), 32),
+        ("offsetof(o3d_fgr_options_t, tuple_scale)", offset_of!(o3d_fgr_options_t, tuple_scale), 40),
+        ("offsetof(o3d_fgr_options_t, maximum_tuple_count)", offset_of!(o3d_fgr_options_t, maximum_tuple_count), 48),
+        ("offsetof(o3d_fgr_options_t, tuple_test)", offset_of!(o3d_fgr_options_t, tuple_test), 52),
+        ("offsetof(o3d_fgr_options_t, use_seed)", offset_of!(o3d_fgr_options_t, use_seed), 56),
+        ("offsetof(o3d_fgr_options_t, seed)", offset_of!(o3d_fgr_options_t, seed), 64),
+        ("offsetof(o3d_fgr_options_t, num_threads)", offset_of!(o3d_fgr_options_t, num_threads), 72),
+        ("offsetof(o3d_fgr_options_t, progress)", offset_of!(o3d_fgr_options_t, progress), 80),
+        ("offsetof(o3d_fgr_options_t, user_data)", offset_of!(o3d_fgr_options_t, user_data), 88),
+        ("sizeof(o3d_pose_graph_edge_t)", size_of::<o3d_pose_graph_edge_t>(), 448),
+        ("_Alignof(o3d_pose_graph_edge_t)", align_of::<o3d_pose_graph_edge_t>(), 8),
+        ("offsetof(o3d_pose_graph_edge_t, struct_size)", offset_of!(o3d_pose_graph_edge_t, struct_size), 0),
+        ("offsetof(o3d_pose_graph_edge_t, source_node_id)", offset_of!(o3d_pose_graph_edge_t, source_node_id), 4),
+        ("offsetof(o3d_pose_graph_edge_t, target_node_id)", offset_of!(o3d_pose_graph_edge_t, target_node_id), 8),
+        ("offsetof(o3d_pose_graph_edge_t, transformation)", offset_of!(o3d_pose_graph_edge_t, transformation), 16),
+        ("offsetof(o3d_pose_graph_edge_t, information)", offset_of!(o3d_pose_graph_edge_t, information), 144),
+        ("offsetof(o3d_pose_graph_edge_t, uncertain)", offset_of!(o3d_pose_graph_edge_t, uncertain), 432),
+        ("offsetof(o3d_pose_graph_edge_t, confidence)", offset_of!(o3d_pose_graph_edge_t, confidence), 440),
+        ("sizeof(o3d_global_optimization_options_t)", size_of::<o3d_global_optimization_options_t>(), 120),
+        ("_Alignof(o3d_global_optimization_options_t)", align_of::<o3d_global_optimization_options_t>(), 8),
+        (
+            "offsetof(o3d_global_optimization_options_t, struct_size)",
+            offset_of!(o3d_global_optimization_options_t, struct_size),
+            0,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, method)",
+            offset_of!(o3d_global_optimization_options_t, method),
+            4,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, max_iteration)",
+            offset_of!(o3d_global_optimization_options_t, max_iteration),
+            8,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, min_relative_increment)",
+            offset_of!(o3d_global_optimization_options_t, min_relative_increment),
+            16,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, min_relative_residual_increment)",
+            offset_of!(o3d_global_optimization_options_t, min_relative_residual_increment),
+            24,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, min_right_term)",
+            offset_of!(o3d_global_optimization_options_t, min_right_term),
+            32,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, min_residual)",
+            offset_of!(o3d_global_optimization_options_t, min_residual),
+            40,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, max_iteration_lm)",
+            offset_of!(o3d_global_optimization_options_t, max_iteration_lm),
+            48,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, upper_scale_factor)",
+            offset_of!(o3d_global_optimization_options_t, upper_scale_factor),
+            56,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, lower_scale_factor)",
+            offset_of!(o3d_global_optimization_options_t, lower_scale_factor),
+            64,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, max_correspondence_distance)",
+            offset_of!(o3d_global_optimization_options_t, max_correspondence_distance),
+            72,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, edge_prune_threshold)",
+            offset_of!(o3d_global_optimization_options_t, edge_prune_threshold),
+            80,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, preference_loop_closure)",
+            offset_of!(o3d_global_optimization_options_t, preference_loop_closure),
+            88,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, reference_node)",
+            offset_of!(o3d_global_optimization_options_t, reference_node),
+            96,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, num_threads)",
+            offset_of!(o3d_global_optimization_options_t, num_threads),
+            100,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, progress)",
+            offset_of!(o3d_global_optimization_options_t, progress),
+            104,
+        ),
+        (
+            "offsetof(o3d_global_optimization_options_t, user_data)",
+            offset_of!(o3d_global_optimization_options_t, user_data),
+            112,
+        ),
+        ("sizeof(o3d_global_optimization_summary_t)", size_of::<o3d_global_optimization_summary_t>(), 32),
+        ("_Alignof(o3d_global_optimization_summary_t)", align_of::<o3d_global_optimization_summary_t>(), 8),
+        (
+            "offsetof(o3d_global_optimization_summary_t, struct_size)",
+            offset_of!(o3d_global_optimization_summary_t, struct_size),
+            0,
+        ),
+        (
+            "offsetof(o3d_global_optimization_summary_t, iterations)",
+            offset_of!(o3d_global_optimization_summary_t, iterations),
+            4,
+        ),
+        (
+            "offsetof(o3d_global_optimization_summary_t, initial_residual)",
+            offset_of!(o3d_global_optimization_summary_t, initial_residual),
+            8,
+        ),
+        (
+            "offsetof(o3d_global_optimization_summary_t, final_residual)",
+            offset_of!(o3d_global_optimization_summary_t, final_residual),
+            16,
+        ),
+        (
+            "offsetof(o3d_global_optimization_summary_t, pruned_edges)",
+            offset_of!(o3d_global_optimization_summary_t, pruned_edges),
+            24,
+        ),
         ("sizeof(o3d_pinhole_intrinsic_t)", size_of::<o3d_pinhole_intrinsic_t>(), 40),
         ("_Alignof(o3d_pinhole_intrinsic_t)", align_of::<o3d_pinhole_intrinsic_t>(), 8),
         ("offsetof(o3d_pinhole_intrinsic_t, width)", offset_of!(o3d_pinhole_intrinsic_t, width), 0),
@@ -232,6 +402,7 @@ fn icp_options_init_accepts_rust_size_and_fills_defaults() {
         assert_eq!(i.num_threads, 0);
         assert!(i.progress.is_none());
         assert!(i.user_data.is_null());
+        assert_eq!((i.kernel, i.kernel_k, i.lambda_geometric, i.epsilon), (O3D_KERNEL_L2, 1.0, 0.968, 1e-3));
 
         // A size larger than the library knows is refused, with a message.
         let mut big = [0u64; 32];
@@ -239,6 +410,79 @@ fn icp_options_init_accepts_rust_size_and_fills_defaults() {
         assert_eq!(st, O3D_ERROR_INVALID_ARGUMENT);
         assert_eq!(o3d_last_error_code(), O3D_ERROR_INVALID_ARGUMENT);
         assert!(!last_message().is_empty());
+    }
+}
+
+#[test]
+fn global_registration_options_init_accept_rust_sizes_and_fill_defaults() {
+    unsafe {
+        let mut r: o3d_ransac_options_t = std::mem::zeroed();
+        let st = o3d_ransac_options_init(&mut r, size_of::<o3d_ransac_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(r.struct_size as usize, size_of::<o3d_ransac_options_t>());
+        assert_eq!((r.estimation, r.with_scaling, r.ransac_n), (O3D_ESTIMATION_POINT_TO_POINT, 0, 3));
+        assert_eq!((r.max_iteration, r.confidence), (100000, 0.999));
+        assert_eq!((r.mutual_filter, r.use_seed, r.num_threads), (0, 0, 0));
+        assert!(r.progress.is_none() && r.user_data.is_null());
+
+        let mut f: o3d_fgr_options_t = std::mem::zeroed();
+        let st = o3d_fgr_options_init(&mut f, size_of::<o3d_fgr_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(f.struct_size as usize, size_of::<o3d_fgr_options_t>());
+        assert_eq!((f.division_factor, f.use_absolute_scale, f.decrease_mu), (1.4, 0, 1));
+        assert_eq!((f.maximum_correspondence_distance, f.iteration_number), (0.025, 64));
+        assert_eq!((f.tuple_scale, f.maximum_tuple_count, f.tuple_test), (0.95, 1000, 1));
+        assert_eq!((f.use_seed, f.num_threads), (0, 0));
+        assert!(f.progress.is_none() && f.user_data.is_null());
+
+        for (kind, threshold) in [(O3D_CHECKER_EDGE_LENGTH, 0.9), (O3D_CHECKER_DISTANCE, 0.075)] {
+            let mut c: o3d_correspondence_checker_t = std::mem::zeroed();
+            let st = o3d_correspondence_checker_init(&mut c, size_of::<o3d_correspondence_checker_t>() as u32, kind);
+            assert_eq!(st, O3D_OK, "{}", last_message());
+            assert_eq!(c, o3d_correspondence_checker_t { struct_size: 16, kind, threshold });
+        }
+        let mut c: o3d_correspondence_checker_t = std::mem::zeroed();
+        let st = o3d_correspondence_checker_init(&mut c, 16, O3D_CHECKER_NORMAL);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert!((c.threshold - 30f64.to_radians()).abs() < 1e-4, "{}", c.threshold);
+        assert_eq!(o3d_correspondence_checker_init(&mut c, 16, 99), O3D_ERROR_INVALID_ARGUMENT);
+    }
+}
+
+#[test]
+fn pose_graph_structs_init_accept_rust_sizes_and_fill_defaults() {
+    unsafe {
+        let mut e: o3d_pose_graph_edge_t = std::mem::zeroed();
+        let st = o3d_pose_graph_edge_init(&mut e, size_of::<o3d_pose_graph_edge_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(e.struct_size as usize, size_of::<o3d_pose_graph_edge_t>());
+        assert_eq!((e.source_node_id, e.target_node_id, e.uncertain, e.confidence), (0, 0, 0, 1.0));
+        for (i, v) in e.transformation.iter().enumerate() {
+            assert_eq!(*v, if i % 5 == 0 { 1.0 } else { 0.0 }, "transformation[{i}]");
+        }
+        for (i, v) in e.information.iter().enumerate() {
+            assert_eq!(*v, if i % 7 == 0 { 1.0 } else { 0.0 }, "information[{i}]");
+        }
+
+        let mut g: o3d_global_optimization_options_t = std::mem::zeroed();
+        let st = o3d_global_optimization_options_init(&mut g, size_of::<o3d_global_optimization_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(g.struct_size as usize, size_of::<o3d_global_optimization_options_t>());
+        assert_eq!(
+            (g.method, g.max_iteration, g.max_iteration_lm),
+            (O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT, 100, 20)
+        );
+        assert_eq!(
+            (g.min_relative_increment, g.min_relative_residual_increment, g.min_right_term, g.min_residual),
+            (1e-6, 1e-6, 1e-6, 1e-6)
+        );
+        assert_eq!((g.upper_scale_factor, g.lower_scale_factor), (2.0 / 3.0, 1.0 / 3.0));
+        assert_eq!(
+            (g.max_correspondence_distance, g.edge_prune_threshold, g.preference_loop_closure),
+            (0.075, 0.25, 1.0)
+        );
+        assert_eq!((g.reference_node, g.num_threads), (-1, 0));
+        assert!(g.progress.is_none() && g.user_data.is_null());
     }
 }
 

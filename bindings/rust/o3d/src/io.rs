@@ -1,6 +1,6 @@
 //! Reading and writing (o3d.io): point clouds (PLY, PCD, XYZ, XYZN, XYZRGB, PTS), triangle meshes
 //! (PLY, OBJ, STL, OFF, glTF/GLB), images (PNG, JPEG, PPM, PGM) and camera models (JSON, .log), to
-//! files or memory.
+//! files or memory; features (Open3D's binary layout) and pose graphs (Open3D's JSON).
 //!
 //! Formats are named as in Open3D (`"ply"`, `"pcd"`, ...); `"auto"` or `""` picks the format from
 //! the file extension. Paths must be valid UTF-8 (anything else is an `InvalidArgument` error).
@@ -16,7 +16,9 @@ use o3d_sys as sys;
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{new_cloud, PointCloud};
 
+pub use crate::feature::{read_feature, write_feature};
 pub use crate::io_geometry::*;
+pub use crate::posegraph::{read_pose_graph, write_pose_graph};
 
 /// Read options (o3d.io.read_point_cloud keyword arguments).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -1,4 +1,5 @@
-//! `KDTreeFlann` (o3d.geometry.KDTreeFlann) with one-call batch searches.
+//! `KDTreeFlann` (o3d.geometry.KDTreeFlann) with one-call batch searches, over 3-D points or over
+//! points of any dimension (features).
 use std::fmt;
 use std::ptr::{self, NonNull};
 use std::slice;
@@ -6,9 +7,12 @@ use std::slice;
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
+use crate::feature::{rows_of, Feature};
 use crate::pointcloud::{PointCloud, SearchParam};
+use crate::util::to_i32;
 
-/// A KD-tree over 3-D points. It copies the points, so it outlives the cloud it was built from.
+/// A KD-tree over 3-D points, or over points of any dimension ([`KDTreeFlann::from_feature`],
+/// [`KDTreeFlann::from_points_xd`]). It copies the points, so it outlives what it was built from.
 /// `Send` and `Sync`: searches take the tree `const` and may run concurrently.
 pub struct KDTreeFlann {
     raw: NonNull<sys::o3d_kdtree_t>,
@@ -133,6 +137,78 @@ impl KDTreeFlann {
     pub fn from_points(points: &[[f64; 3]]) -> Result<KDTreeFlann> {
         // SAFETY: points.len() rows of 3 contiguous doubles.
         wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_points(out, points.as_ptr().cast(), points.len()) })
+    }
+
+    /// Build a tree over the descriptors of `feature` (copied), of dimension `feature.dimension()`.
+    pub fn from_feature(feature: &Feature) -> Result<KDTreeFlann> {
+        // SAFETY: valid feature handle.
+        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_feature(out, feature.as_raw()) })
+    }
+
+    /// Build a tree over `data.len() / dimension` points of `dimension` values each, one after the
+    /// other (copied). A length that is not whole points is an error.
+    pub fn from_points_xd(data: &[f64], dimension: usize) -> Result<KDTreeFlann> {
+        let n = rows_of(data.len(), dimension)?;
+        // SAFETY: data holds n * dimension doubles.
+        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_points_xd(out, data.as_ptr(), dimension, n) })
+    }
+
+    /// Dimension of the indexed points (3 for trees over clouds).
+    pub fn dimension(&self) -> Result<usize> {
+        let mut d = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { sys::o3d_kdtree_dimension(self.raw.as_ptr(), &mut d) })?;
+        Ok(d)
+    }
+
+    /// Search `queries.len() / dimension` query points of `dimension` values each (which must be
+    /// the tree's dimension) at once, on `num_threads` threads (0 = the library default), keeping
+    /// the result in the library.
+    pub fn search_xd_ref(
+        &self,
+        queries: &[f64],
+        dimension: usize,
+        param: SearchParam,
+        num_threads: usize,
+    ) -> Result<SearchResultRef> {
+        let n = rows_of(queries.len(), dimension)?;
+        let p = param.to_raw()?;
+        let threads = to_i32(num_threads, "num_threads")?;
+        // SAFETY: queries holds n * dimension doubles; valid parameter struct.
+        wrap_result(|out| unsafe {
+            sys::o3d_kdtree_search_xd(self.raw.as_ptr(), queries.as_ptr(), n, dimension, &p, threads, out)
+        })
+    }
+
+    /// As [`Self::search_xd_ref`], copied into owned vectors (library-default thread count).
+    pub fn search_xd(&self, queries: &[f64], dimension: usize, param: SearchParam) -> Result<SearchResult> {
+        self.search_xd_ref(queries, dimension, param, 0)?.to_search_result()
+    }
+
+    /// Search with every descriptor of `feature` as a query.
+    pub fn search_feature(&self, feature: &Feature, param: SearchParam) -> Result<SearchResult> {
+        self.search_xd(feature.data(), feature.dimension(), param)
+    }
+
+    /// One query of any dimension (Open3D `search_vector_xd`): (indices, squared distances).
+    pub fn search_vector_xd(&self, query: &[f64], param: SearchParam) -> Result<(Vec<i32>, Vec<f64>)> {
+        let r = self.search_xd(query, query.len(), param)?;
+        Ok((r.indices, r.distances2))
+    }
+
+    /// The `knn` nearest points of `query` (Open3D `search_knn_vector_xd`).
+    pub fn search_knn_vector_xd(&self, query: &[f64], knn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_xd(query, SearchParam::Knn { knn })
+    }
+
+    /// All points within `radius` of `query` (Open3D `search_radius_vector_xd`).
+    pub fn search_radius_vector_xd(&self, query: &[f64], radius: f64) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_xd(query, SearchParam::Radius { radius })
+    }
+
+    /// At most `max_nn` nearest points within `radius` (Open3D `search_hybrid_vector_xd`).
+    pub fn search_hybrid_vector_xd(&self, query: &[f64], radius: f64, max_nn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
+        self.search_vector_xd(query, SearchParam::Hybrid { radius, max_nn })
     }
 
     /// Number of indexed points.

@@ -4,7 +4,11 @@
 //! [`PointCloud`] (`o3d.geometry.PointCloud`), [`TriangleMesh`], [`LineSet`], [`VoxelGrid`],
 //! [`Octree`], [`OrientedBoundingBox`], [`Image`], [`RgbdImage`],
 //! [`PinholeIntrinsic`] (`o3d.camera.PinholeCameraIntrinsic`), [`KDTreeFlann`],
-//! [`io::read_point_cloud`], [`io::read_triangle_mesh`], [`registration::registration_icp`].
+//! [`io::read_point_cloud`], [`io::read_triangle_mesh`], [`registration::registration_icp`],
+//! [`Feature`] and [`registration::compute_fpfh_feature`], global registration
+//! ([`registration::registration_ransac_based_on_feature_matching`],
+//! [`registration::registration_fgr_based_on_feature_matching`]), [`PoseGraph`] and
+//! [`registration::global_optimization`].
 //!
 //! * Every fallible call returns [`Result<T, Error>`](Error); the error carries the library's message.
 //! * Handles are owned (`Drop` destroys them); views such as [`PointCloud::points`] are zero-copy
@@ -12,7 +16,7 @@
 //! * Threading (the C rule: concurrent calls on one handle are safe when all take it `const`): the
 //!   handles are `Send` and `Sync`; every `&self` method calls only `const` C functions and every
 //!   mutation takes `&mut self`.
-//! * Callbacks (ICP progress, logging) are Rust closures run behind `catch_unwind`; a panic never
+//! * Callbacks (progress of ICP, RANSAC, FGR and global optimization; logging) are Rust closures run behind `catch_unwind`; a panic never
 //!   crosses the C boundary.
 //!
 //! ```no_run
@@ -34,6 +38,7 @@ pub use o3d_sys as sys;
 mod boundingbox;
 pub mod camera;
 mod error;
+mod feature;
 mod hull;
 mod image;
 pub mod io;
@@ -44,7 +49,10 @@ mod octree;
 mod panic;
 mod pointcloud;
 mod pointcloud_covariances;
+mod posegraph;
+mod progress;
 pub mod registration;
+mod registration_global;
 mod rgbd;
 mod trianglemesh;
 mod trianglemesh_ops;
@@ -55,11 +63,14 @@ mod voxelgrid;
 pub use boundingbox::OrientedBoundingBox;
 pub use camera::{CameraTrajectory, IntrinsicPreset, PinholeCameraParameters, PinholeIntrinsic};
 pub use error::{Error, ErrorCode, Result};
+pub use feature::Feature;
 pub use image::{ConvertType, Image, ImageFilter, PixelType};
 pub use kdtree::{KDTreeFlann, SearchResult, SearchResultRef};
 pub use lineset::LineSet;
 pub use octree::{Octree, OctreeLeaf, OctreeNodeInfo};
 pub use pointcloud::{PointCloud, SearchParam};
+pub use posegraph::{PoseGraph, PoseGraphEdge};
+pub use registration_global::random_seed;
 pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
 pub use trianglemesh::{MeshArray, TriangleMesh};
 pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};

@@ -1,6 +1,7 @@
-//! Registration (o3d.pipelines.registration): ICP, evaluation, information matrix.
-//! Transformations are row-major 4x4 (`[[f64; 4]; 4]`, `m[row][col]`).
-use std::ffi::c_void;
+//! Registration (o3d.pipelines.registration): ICP (point-to-point, point-to-plane, colored,
+//! generalized, symmetric, with robust kernels), evaluation, information matrix; features and
+//! global registration (RANSAC, FGR, [`registration_global`](crate::registration)); pose graphs
+//! and global optimization. Transformations are row-major 4x4 (`[[f64; 4]; 4]`, `m[row][col]`).
 use std::mem::{size_of, MaybeUninit};
 use std::ops::ControlFlow;
 use std::ptr::{self, NonNull};
@@ -9,6 +10,16 @@ use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{copy_out, PointCloud};
+use crate::progress::with_progress;
+
+pub use crate::feature::{
+    compute_fpfh_feature, compute_fpfh_feature_with, correspondences_from_features, Feature, MatchOptions,
+};
+pub use crate::posegraph::{
+    global_optimization, global_optimization_with_progress, GlobalOptimizationMethod, GlobalOptimizationOptions,
+    GlobalOptimizationSummary, PoseGraph, PoseGraphEdge,
+};
+pub use crate::registration_global::*;
 
 /// The 4x4 identity.
 pub const IDENTITY: [[f64; 4]; 4] =
@@ -22,9 +33,107 @@ pub enum Estimation {
     PointToPoint,
     /// TransformationEstimationPointToPlane (the target needs normals).
     PointToPlane,
+    /// TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the
+    /// target normals; see [`IcpOptions::lambda_geometric`].
+    Colored,
+    /// TransformationEstimationForGeneralizedICP (Segal et al. 2009): covariances come from the
+    /// clouds, else from their normals, else from 20 neighbours; see [`IcpOptions::epsilon`].
+    Generalized,
+    /// TransformationEstimationSymmetric (Rusinkiewicz 2019): both clouds need normals.
+    Symmetric,
 }
 
-/// ICP options: estimation method and ICPConvergenceCriteria. `Default` is Open3D's.
+impl Estimation {
+    pub(crate) fn raw(self) -> i32 {
+        match self {
+            Estimation::PointToPoint => sys::O3D_ESTIMATION_POINT_TO_POINT,
+            Estimation::PointToPlane => sys::O3D_ESTIMATION_POINT_TO_PLANE,
+            Estimation::Colored => sys::O3D_ESTIMATION_COLORED,
+            Estimation::Generalized => sys::O3D_ESTIMATION_GENERALIZED,
+            Estimation::Symmetric => sys::O3D_ESTIMATION_SYMMETRIC,
+        }
+    }
+
+    pub(crate) fn from_raw(raw: i32) -> Result<Estimation> {
+        Ok(match raw {
+            sys::O3D_ESTIMATION_POINT_TO_POINT => Estimation::PointToPoint,
+            sys::O3D_ESTIMATION_POINT_TO_PLANE => Estimation::PointToPlane,
+            sys::O3D_ESTIMATION_COLORED => Estimation::Colored,
+            sys::O3D_ESTIMATION_GENERALIZED => Estimation::Generalized,
+            sys::O3D_ESTIMATION_SYMMETRIC => Estimation::Symmetric,
+            other => return Err(Error::new(ErrorCode::Internal, format!("unknown estimation {other}"))),
+        })
+    }
+}
+
+/// Robust kernel (M-estimator) weighting each residual `r` of point-to-plane, colored,
+/// generalized and symmetric ICP; `k` is its scale (Open3D's `L2Loss()`, `TukeyLoss(k)`, ...).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum RobustKernel {
+    /// w = 1 (plain least squares).
+    #[default]
+    L2,
+    /// w = 1 / |r|.
+    L1,
+    /// w = 1 if |r| <= k else k / |r|.
+    Huber {
+        /// Scale.
+        k: f64,
+    },
+    /// w = 1 / (1 + (r / k)^2).
+    Cauchy {
+        /// Scale.
+        k: f64,
+    },
+    /// Geman-McClure: w = k / (k + r^2)^2.
+    GM {
+        /// Scale.
+        k: f64,
+    },
+    /// w = (1 - (r / k)^2)^2 if |r| <= k else 0.
+    Tukey {
+        /// Scale.
+        k: f64,
+    },
+}
+
+impl RobustKernel {
+    /// (`O3D_KERNEL_*`, k); L2 and L1 pass the library's default k of 1 (unused).
+    pub(crate) fn raw(self) -> (i32, f64) {
+        match self {
+            RobustKernel::L2 => (sys::O3D_KERNEL_L2, 1.0),
+            RobustKernel::L1 => (sys::O3D_KERNEL_L1, 1.0),
+            RobustKernel::Huber { k } => (sys::O3D_KERNEL_HUBER, k),
+            RobustKernel::Cauchy { k } => (sys::O3D_KERNEL_CAUCHY, k),
+            RobustKernel::GM { k } => (sys::O3D_KERNEL_GM, k),
+            RobustKernel::Tukey { k } => (sys::O3D_KERNEL_TUKEY, k),
+        }
+    }
+
+    fn from_raw(kernel: i32, k: f64) -> Result<RobustKernel> {
+        Ok(match kernel {
+            sys::O3D_KERNEL_L2 => RobustKernel::L2,
+            sys::O3D_KERNEL_L1 => RobustKernel::L1,
+            sys::O3D_KERNEL_HUBER => RobustKernel::Huber { k },
+            sys::O3D_KERNEL_CAUCHY => RobustKernel::Cauchy { k },
+            sys::O3D_KERNEL_GM => RobustKernel::GM { k },
+            sys::O3D_KERNEL_TUKEY => RobustKernel::Tukey { k },
+            other => return Err(Error::new(ErrorCode::Internal, format!("unknown robust kernel {other}"))),
+        })
+    }
+
+    /// The weight this kernel gives to `residual` (Open3D's `RobustKernel.weight`). A k that is
+    /// not finite and positive is an error.
+    pub fn weight(&self, residual: f64) -> Result<f64> {
+        let (kernel, k) = self.raw();
+        let mut w = 0.0;
+        // SAFETY: plain values and an out-pointer.
+        check(unsafe { sys::o3d_robust_kernel_weight(kernel, k, residual, &mut w) })?;
+        Ok(w)
+    }
+}
+
+/// ICP options: estimation method, robust kernel and ICPConvergenceCriteria. `Default` is Open3D's.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IcpOptions {
     /// Estimation method (default point-to-point).
@@ -39,6 +148,12 @@ pub struct IcpOptions {
     pub max_iteration: usize,
     /// Threads; 0 = the library default (default 0).
     pub num_threads: usize,
+    /// Robust kernel of point-to-plane, colored, generalized and symmetric ICP (default L2).
+    pub kernel: RobustKernel,
+    /// Colored ICP: weight of the geometric term, in [0, 1] (default 0.968).
+    pub lambda_geometric: f64,
+    /// Generalized ICP: covariance regularisation, > 0 (default 1e-3).
+    pub epsilon: f64,
 }
 
 impl Default for IcpOptions {
@@ -50,6 +165,9 @@ impl Default for IcpOptions {
             relative_rmse: 1e-6,
             max_iteration: 30,
             num_threads: 0,
+            kernel: RobustKernel::L2,
+            lambda_geometric: 0.968,
+            epsilon: 1e-3,
         }
     }
 }
@@ -63,30 +181,29 @@ impl IcpOptions {
     pub fn library_defaults() -> Result<IcpOptions> {
         let raw = raw_icp_options()?;
         Ok(IcpOptions {
-            estimation: if raw.estimation == sys::O3D_ESTIMATION_POINT_TO_PLANE {
-                Estimation::PointToPlane
-            } else {
-                Estimation::PointToPoint
-            },
+            estimation: Estimation::from_raw(raw.estimation)?,
             with_scaling: raw.with_scaling != 0,
             relative_fitness: raw.relative_fitness,
             relative_rmse: raw.relative_rmse,
             max_iteration: raw.max_iteration.max(0) as usize,
             num_threads: raw.num_threads.max(0) as usize,
+            kernel: RobustKernel::from_raw(raw.kernel, raw.kernel_k)?,
+            lambda_geometric: raw.lambda_geometric,
+            epsilon: raw.epsilon,
         })
     }
 
     fn to_raw(self) -> Result<sys::o3d_icp_options_t> {
         let mut raw = raw_icp_options()?;
-        raw.estimation = match self.estimation {
-            Estimation::PointToPoint => sys::O3D_ESTIMATION_POINT_TO_POINT,
-            Estimation::PointToPlane => sys::O3D_ESTIMATION_POINT_TO_PLANE,
-        };
+        raw.estimation = self.estimation.raw();
         raw.with_scaling = self.with_scaling as i32;
         raw.relative_fitness = self.relative_fitness;
         raw.relative_rmse = self.relative_rmse;
         raw.max_iteration = to_i32("max_iteration", self.max_iteration)?;
         raw.num_threads = to_i32("num_threads", self.num_threads)?;
+        (raw.kernel, raw.kernel_k) = self.kernel.raw();
+        raw.lambda_geometric = self.lambda_geometric;
+        raw.epsilon = self.epsilon;
         Ok(raw)
     }
 }
@@ -122,7 +239,7 @@ impl Drop for RawResult {
     }
 }
 
-fn read_result(
+pub(crate) fn read_result(
     f: impl FnOnce(*mut *mut sys::o3d_registration_result_t) -> sys::o3d_status,
 ) -> Result<RegistrationResult> {
     let mut out = ptr::null_mut();
@@ -149,19 +266,6 @@ fn read_result(
         sys::o3d_registration_result_get_correspondence_set(h, out.cast(), cap, n)
     })?;
     Ok(r)
-}
-
-type ProgressFn<'a> = dyn FnMut(f64) -> ControlFlow<()> + 'a;
-
-unsafe extern "C" fn progress_trampoline(fraction: f64, user_data: *mut c_void) -> i32 {
-    // SAFETY: user_data is the `&mut &mut ProgressFn` set up by registration_icp_with_progress,
-    // alive for the whole call; the callback runs on the calling thread.
-    let callback = unsafe { &mut *(user_data as *mut &mut ProgressFn<'_>) };
-    match crate::panic::wrap(|| callback(fraction)) {
-        Some(ControlFlow::Continue(())) => 0,
-        Some(ControlFlow::Break(())) => 1,
-        None => 1, // panicked: cancel; the panic resumes when the call returns
-    }
 }
 
 /// Iterative closest point from `source` onto `target`, starting at `init`.
@@ -196,26 +300,75 @@ pub fn registration_icp_with_progress<F>(
     max_correspondence_distance: f64,
     init: &[[f64; 4]; 4],
     options: &IcpOptions,
-    mut progress: F,
+    progress: F,
 ) -> Result<RegistrationResult>
 where
     F: FnMut(f64) -> ControlFlow<()>,
 {
     let mut opts = options.to_raw()?;
-    let mut callback: &mut ProgressFn<'_> = &mut progress;
-    opts.progress = Some(progress_trampoline);
-    opts.user_data = &mut callback as *mut &mut ProgressFn<'_> as *mut c_void;
-    // SAFETY: valid handles, 16 doubles; user_data outlives the call.
-    read_result(|out| unsafe {
-        sys::o3d_register_icp(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            max_correspondence_distance,
-            init.as_ptr().cast(),
-            &opts,
-        )
+    with_progress(progress, |callback, user_data| {
+        (opts.progress, opts.user_data) = (callback, user_data);
+        // SAFETY: valid handles, 16 doubles; user_data outlives the call.
+        read_result(|out| unsafe {
+            sys::o3d_register_icp(
+                out,
+                source.as_raw(),
+                target.as_raw(),
+                max_correspondence_distance,
+                init.as_ptr().cast(),
+                &opts,
+            )
+        })
     })
+}
+
+/// ICP with `estimation` in place of `options.estimation`.
+fn icp_as(
+    estimation: Estimation,
+    source: &PointCloud,
+    target: &PointCloud,
+    max_correspondence_distance: f64,
+    init: &[[f64; 4]; 4],
+    options: &IcpOptions,
+) -> Result<RegistrationResult> {
+    let options = IcpOptions { estimation, ..*options };
+    registration_icp(source, target, max_correspondence_distance, init, &options)
+}
+
+/// Colored ICP (Park et al. 2017; `options.estimation` is ignored): both clouds need colors, the
+/// target normals. @see o3d.pipelines.registration.registration_colored_icp
+pub fn registration_colored_icp(
+    source: &PointCloud,
+    target: &PointCloud,
+    max_correspondence_distance: f64,
+    init: &[[f64; 4]; 4],
+    options: &IcpOptions,
+) -> Result<RegistrationResult> {
+    icp_as(Estimation::Colored, source, target, max_correspondence_distance, init, options)
+}
+
+/// Generalized ICP (Segal et al. 2009; `options.estimation` is ignored).
+/// @see o3d.pipelines.registration.registration_generalized_icp
+pub fn registration_generalized_icp(
+    source: &PointCloud,
+    target: &PointCloud,
+    max_correspondence_distance: f64,
+    init: &[[f64; 4]; 4],
+    options: &IcpOptions,
+) -> Result<RegistrationResult> {
+    icp_as(Estimation::Generalized, source, target, max_correspondence_distance, init, options)
+}
+
+/// Symmetric point-to-plane ICP (Rusinkiewicz 2019; `options.estimation` is ignored): both clouds
+/// need normals. @see o3d.pipelines.registration.registration_symmetric_icp
+pub fn registration_symmetric_icp(
+    source: &PointCloud,
+    target: &PointCloud,
+    max_correspondence_distance: f64,
+    init: &[[f64; 4]; 4],
+    options: &IcpOptions,
+) -> Result<RegistrationResult> {
+    icp_as(Estimation::Symmetric, source, target, max_correspondence_distance, init, options)
 }
 
 /// Fitness, inlier RMSE and correspondences of `source` moved by `transformation`.

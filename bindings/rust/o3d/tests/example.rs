@@ -53,3 +53,27 @@ fn rgbd_example_runs() {
     assert!(back.points().iter().all(|p| p[2] < 0.0));
     assert_eq!(Command::new(&exe).output().unwrap().status.code(), Some(2));
 }
+
+#[test]
+fn global_registration_example_runs() {
+    let (Some(source), Some(target)) =
+        (common::data_file("open3d/Feature/cloud_bin_0.pcd"), common::data_file("open3d/Feature/cloud_bin_1.pcd"))
+    else {
+        return;
+    };
+    let exe = std::env::current_exe().unwrap().parent().unwrap().parent().unwrap().join("examples/global_registration");
+    if !exe.exists() {
+        panic!("{} was not built (run plain `cargo test`, or `cargo build --examples` first)", exe.display());
+    }
+    let run = Command::new(&exe).arg(&source).arg(&target).output().unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(run.status.success(), "stdout: {stdout}\nstderr: {}", String::from_utf8_lossy(&run.stderr));
+    assert!(stdout.contains("read 3903 + 3458 points"), "{stdout}");
+    assert!(stdout.contains("FPFH 33 x "), "{stdout}");
+    // The refined result undoes the 60 degree motion to the scans' own agreement (~0.4 deg).
+    let line = stdout.lines().find(|l| l.starts_with("ICP refine")).unwrap_or_else(|| panic!("{stdout}"));
+    let deg: f64 = line.split("off by ").nth(1).unwrap().split(" deg").next().unwrap().trim().parse().unwrap();
+    assert!(deg < 1.5, "{line}");
+    assert_eq!(Command::new(&exe).output().unwrap().status.code(), Some(2));
+    assert_eq!(Command::new(&exe).arg(&source).arg(&target).arg("-1").output().unwrap().status.code(), Some(2));
+}

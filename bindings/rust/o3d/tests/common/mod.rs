@@ -121,3 +121,37 @@ pub fn max_abs_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
     }
     d
 }
+
+pub fn mat_mul(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
+    let mut m = [[0.0; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            m[i][j] = (0..4).map(|k| a[i][k] * b[k][j]).sum();
+        }
+    }
+    m
+}
+
+/// Inverse of a rigid 4x4 (transpose the rotation, move the translation back).
+pub fn rigid_inverse(m: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
+    let mut r = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            r[i][j] = m[j][i];
+        }
+    }
+    let t = [0, 1, 2].map(|i| -(0..3).map(|k| r[i][k] * m[k][3]).sum::<f64>());
+    rigid(r, t)
+}
+
+/// Angle (degrees) of the rotation between the rotation parts of `a` and `b`.
+pub fn rotation_error_deg(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    let d = mat_mul(a, &rigid_inverse(b));
+    let trace = d[0][0] + d[1][1] + d[2][2];
+    ((trace - 1.0) / 2.0).clamp(-1.0, 1.0).acos().to_degrees()
+}
+
+/// Mean distance between `points` moved by `a` and by `b`.
+pub fn mean_displacement(points: &[[f64; 3]], a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    points.iter().map(|p| dist2(apply(a, *p), apply(b, *p)).sqrt()).sum::<f64>() / points.len().max(1) as f64
+}

@@ -57,14 +57,17 @@ python_examples() {
   .venv/bin/python examples/python/rgbd_to_point_cloud.py "$O3D_TEST_DATA/open3d/RGBD/color/00000.jpg" \
       "$O3D_TEST_DATA/open3d/RGBD/depth/00000.png" "$out/frame.ply" &&
   .venv/bin/python examples/python/mesh_cleanup.py "$O3D_TEST_DATA/open3d/knot.ply" "$out/knot_clean.ply" \
-      "$out/knot_samples.ply"
+      "$out/knot_samples.ply" &&
+  .venv/bin/python examples/python/multiway_registration.py "$O3D_TEST_DATA/livingroom1_clean_micro"
 }
 java_tests() { (cd bindings/java && mvn -B -ntp test -Do3d.native.dir="$ROOT/build/bindings/swig"); }
 rust_tests() { (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" cargo test 2>&1); }
 rust_example() {
   local out; out=$(mktemp -d)
   (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" cargo run -q --example figure1 -- \
-      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply")
+      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply" &&
+   O3D_LIB_DIR="$ROOT/build/capi" cargo run -q --example global_registration -- \
+      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$O3D_TEST_DATA/open3d/Feature/cloud_bin_1.pcd")
 }
 
 step "build" build_main
@@ -77,7 +80,7 @@ step "python: pytest" python_tests
 step "python: examples" python_examples
 step "java: maven + junit" java_tests
 step "rust: cargo test" rust_tests
-step "rust: example" rust_example
+step "rust: examples" rust_example
 
 echo
 if [ $failed -gt 0 ]; then echo "failed suites: ${failed_steps[*]}"; fi

@@ -28,7 +28,9 @@ constexpr size_t kChunk = 1024;
 
 double square(double x) { return x * x; }
 
-void check_param(const SearchParam& param) {
+}  // namespace
+
+void validate(const SearchParam& param) {
     switch (param.kind) {
         case SearchParam::Kind::Knn:
             if (param.knn < 1) throw InvalidArgument("knn must be >= 1, got " + std::to_string(param.knn));
@@ -43,8 +45,6 @@ void check_param(const SearchParam& param) {
     }
     throw InvalidArgument("unknown search kind");
 }
-
-}  // namespace
 
 struct KDTree::Impl {
     std::vector<Eigen::Vector3d> points;
@@ -134,7 +134,7 @@ int KDTree::search_hybrid(const Eigen::Vector3d& query, double radius, int max_n
 
 int KDTree::search(const Eigen::Vector3d& query, const SearchParam& param, std::vector<int>& indices,
                    std::vector<double>& distances2) const {
-    check_param(param);
+    validate(param);
     switch (param.kind) {
         case SearchParam::Kind::Knn: return search_knn(query, param.knn, indices, distances2);
         case SearchParam::Kind::Radius: return search_radius(query, param.radius, indices, distances2);
@@ -155,7 +155,7 @@ int KDTree::search_nearest(const Eigen::Vector3d& query, double max_distance, do
 
 SearchResult KDTree::search_batch(const std::vector<Eigen::Vector3d>& queries, const SearchParam& param,
                                   int num_threads) const {
-    check_param(param);
+    validate(param);
     for (size_t i = 0; i < queries.size(); ++i)
         if (!queries[i].allFinite())
             throw InvalidArgument("query " + std::to_string(i) + " has a non-finite coordinate");

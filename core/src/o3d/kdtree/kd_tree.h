@@ -21,6 +21,9 @@ struct SearchParam {
     static SearchParam make_hybrid(double r, int max_nn) { return {Kind::Hybrid, max_nn, r}; }
 };
 
+/// @brief Throw o3d::InvalidArgument unless `param` is usable: knn / max_nn >= 1, radius finite and > 0.
+void validate(const SearchParam& param);
+
 /// @brief Flat results of a batch search: neighbours of query i are [offsets[i], offsets[i+1]).
 struct SearchResult {
     std::vector<int64_t> offsets;  ///< num_queries + 1 entries, offsets[0] = 0

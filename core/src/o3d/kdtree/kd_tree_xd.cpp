@@ -26,22 +26,6 @@ constexpr size_t kChunk = 256;
 
 double square(double x) { return x * x; }
 
-void check_param(const SearchParam& param) {
-    switch (param.kind) {
-        case SearchParam::Kind::Knn:
-            if (param.knn < 1) throw InvalidArgument("knn must be >= 1, got " + std::to_string(param.knn));
-            return;
-        case SearchParam::Kind::Hybrid:
-            if (param.knn < 1) throw InvalidArgument("max_nn must be >= 1, got " + std::to_string(param.knn));
-            [[fallthrough]];
-        case SearchParam::Kind::Radius:
-            if (!std::isfinite(param.radius) || param.radius <= 0.0)
-                throw InvalidArgument("radius must be finite and > 0, got " + std::to_string(param.radius));
-            return;
-    }
-    throw InvalidArgument("unknown search kind");
-}
-
 bool all_finite(const double* v, size_t n) {
     for (size_t i = 0; i < n; ++i)
         if (!std::isfinite(v[i])) return false;
@@ -143,7 +127,7 @@ int KDTreeXd::search_hybrid(const double* query, double radius, int max_nn, std:
 
 int KDTreeXd::search(const double* query, const SearchParam& param, std::vector<int>& indices,
                      std::vector<double>& distances2) const {
-    check_param(param);
+    validate(param);
     switch (param.kind) {
         case SearchParam::Kind::Knn: return search_knn(query, param.knn, indices, distances2);
         case SearchParam::Kind::Radius: return search_radius(query, param.radius, indices, distances2);
@@ -162,7 +146,7 @@ int KDTreeXd::search_nearest(const double* query, double& distance2) const {
 
 SearchResult KDTreeXd::search_batch(const double* queries, size_t num_queries, const SearchParam& param,
                                     int num_threads) const {
-    check_param(param);
+    validate(param);
     const size_t dim = dimension(), nq = num_queries;
     if (nq > 0 && !queries) throw InvalidArgument("queries is NULL but num_queries = " + std::to_string(nq));
     for (size_t q = 0; q < nq; ++q)

@@ -18,16 +18,6 @@ constexpr double kMinCells = 65536.0;
 // Queries per task: fixed, so the split (and the output) never depends on the thread count.
 constexpr size_t kChunk = 256;
 
-void check_param(const kdtree::SearchParam& param) {
-    using Kind = kdtree::SearchParam::Kind;
-    if (param.kind != Kind::Knn && param.kind != Kind::Radius && param.kind != Kind::Hybrid)
-        throw InvalidArgument("unknown search kind");
-    if ((param.kind == Kind::Knn || param.kind == Kind::Hybrid) && param.knn < 1)
-        throw InvalidArgument("knn / max_nn must be >= 1, got " + std::to_string(param.knn));
-    if (param.kind != Kind::Knn && !(std::isfinite(param.radius) && param.radius > 0.0))
-        throw InvalidArgument("radius must be finite and > 0, got " + std::to_string(param.radius));
-}
-
 }  // namespace
 
 struct FpfhNeighbourhoods::Grid {
@@ -116,7 +106,7 @@ struct FpfhNeighbourhoods::Grid {
 
 FpfhNeighbourhoods::FpfhNeighbourhoods(const std::vector<Eigen::Vector3d>& points, const kdtree::SearchParam& param)
     : points_(points), param_(param) {
-    check_param(param);
+    kdtree::validate(param);
     for (size_t i = 0; i < points.size(); ++i)
         if (!points[i].allFinite())
             throw InvalidArgument("point " + std::to_string(i) + " has a non-finite coordinate");

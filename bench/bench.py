@@ -674,6 +674,13 @@ def geometry_rows():
         ROWS.append(("Image", f"filter {kind} (640x480 float depth)", lambda kind=kind: image_filter_impls(kind), ""))
 
 
+def registration_rows():
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from registration_rows import Rows
+
+    Rows({"MOD": MOD, "DATA": DATA, "make_cloud": make_cloud, "threads": T}).add(ROWS)
+
+
 # ----------------------------------------------------------------------------------------------------------------
 # Report
 # ----------------------------------------------------------------------------------------------------------------
@@ -753,6 +760,7 @@ def main():
     voxel_rows()
     algo_rows()
     geometry_rows()
+    registration_rows()
 
     results = []
     header = f"{'row':<52} {'o3d':>12} {'open3d':>20} {'small_gicp':>12} {'open3d/o3d':>11} {'sgicp/o3d':>10}"
@@ -795,9 +803,11 @@ def target(name, cells, misses):
             return "NO"
         return "-"
     why = []
-    if p.seconds is not None and p.seconds / o.seconds < 1.5:
-        why.append(f"{p.seconds / o.seconds:.2f}x vs Open3D < 1.5x")
-    if "point-to-plane" in name and g.seconds is not None and g.seconds / o.seconds < 1.0:
+    # Issue 5 asks 2x Open3D on FPFH and RANSAC; every other row 1.5x.
+    wanted = 2.0 if name.startswith(("compute_fpfh", "RANSAC")) else 1.5
+    if p.seconds is not None and p.seconds / o.seconds < wanted:
+        why.append(f"{p.seconds / o.seconds:.2f}x vs Open3D < {wanted}x")
+    if ("point-to-plane" in name or "generalized ICP" in name) and g.seconds is not None and g.seconds / o.seconds < 1.0:
         why.append(f"{g.seconds / o.seconds:.2f}x vs small_gicp < 1x")
     if why:
         misses.append(f"{name} ({', '.join(why)})")

@@ -81,6 +81,12 @@ std::string row_knn(const std::string& label);
 std::string row_normals_knn();
 std::string row_normals_hybrid();
 std::string row_icp(bool plane, const std::string& label);
+std::string row_fpfh();
+
+/// FPFH row: cloud_bin_0 voxel-downsampled at 0.05 with hybrid(0.1, 30) normals (made once by o3d, so both
+/// libraries see the same points and normals), features with radius 0.25.
+constexpr double kFpfhRadius = 0.25;
+constexpr int kFpfhMaxNn = 100;
 
 using Results = std::map<std::string, Cell>;  // row name -> cell
 

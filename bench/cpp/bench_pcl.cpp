@@ -3,6 +3,7 @@
 #include "bench.h"
 
 #include <pcl/common/io.h>
+#include <pcl/features/fpfh_omp.h>
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/io/pcd_io.h>
@@ -12,6 +13,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/registration/icp.h>
+#include <pcl/search/kdtree.h>
 
 #include <cmath>
 #include <cstdint>
@@ -277,6 +279,27 @@ void run_pcl(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
                 [&] { return icp_summary(ic, T); });
         });
     }
+    out[row_fpfh()] = guarded([&] {
+        const Cloud& in = clouds.at("fpfh_input");
+        pcl::PointCloud<pcl::PointNormal>::Ptr c(new pcl::PointCloud<pcl::PointNormal>);
+        fill_xyz(in, *c);
+        fill_normals(in, *c);
+        pcl::PointCloud<pcl::FPFHSignature33> features;
+        return measure(
+            cfg, nullptr,
+            [&] {
+                // The search tree is built inside the timed call, as o3d builds its own.
+                pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
+                pcl::FPFHEstimationOMP<pcl::PointNormal, pcl::PointNormal, pcl::FPFHSignature33> est;
+                est.setNumberOfThreads(static_cast<unsigned>(cfg.threads));
+                est.setInputCloud(c);
+                est.setInputNormals(c);
+                est.setSearchMethod(tree);
+                est.setRadiusSearch(kFpfhRadius);
+                est.compute(features);
+            },
+            [&] { return "33x" + std::to_string(features.size()) + " (radius only)"; });
+    });
 }
 
 }  // namespace bench

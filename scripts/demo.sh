@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's demo command: installs what is needed, builds o3d's Python package into .venv, and runs
-# the paper's Figure 1 task (read, voxel down-sample, normals, write) plus ICP and a mesh pass on synthesized data.
+# the paper's Figure 1 task (read, voxel down-sample, normals, write) plus ICP, global registration and a mesh pass on synthesized data.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

@@ -67,7 +67,11 @@ o3d_ransac_options_t ransac_options(py::handle estimation, int32_t ransac_n, py:
     check(o3d_ransac_options_init(&o, sizeof(o)));
     static const Estimation point_to_point;
     const Estimation& e = as_estimation(estimation, point_to_point);
-    o.estimation = e.kind;  // the C call accepts point-to-point and point-to-plane; the kernel has no field here
+    // The C call accepts point-to-point and point-to-plane (it rejects the others) and has no kernel: a robust
+    // kernel would be ignored, so it is refused rather than dropped.
+    if (e.kernel && e.kernel->kind != O3D_KERNEL_L2)
+        invalid("estimation_method: RANSAC takes no robust kernel (use L2Loss, or refine with registration_icp)");
+    o.estimation = e.kind;
     o.with_scaling = e.with_scaling ? 1 : 0;
     o.ransac_n = ransac_n;
     if (!criteria.is_none()) {

@@ -230,6 +230,9 @@ def test_bad_arguments_raise(scene):
     with pytest.raises(ValueError):
         reg.registration_ransac_based_on_feature_matching(source, target, fs, ft, False, 0.075,
                                                           estimation_method="point")
+    with pytest.raises(o3d.InvalidArgumentError):  # RANSAC has no robust kernel: refused, not dropped
+        reg.registration_ransac_based_on_feature_matching(
+            source, target, fs, ft, False, 0.075, reg.TransformationEstimationPointToPlane(reg.TukeyLoss(k=0.1)))
     with pytest.raises(ValueError):
         reg.registration_ransac_based_on_feature_matching(source, target, fs, ft, False, 0.075, seed="x")
     with pytest.raises(TypeError):

@@ -56,8 +56,10 @@ O3D_API o3d_status o3d_feature_select_by_index(o3d_feature_t** out, const o3d_fe
  * @brief Fast Point Feature Histograms (Rusu et al. 2009), 33 x N; the cloud needs normals.
  * `param` (NULL: KNN 30) selects each point's neighbourhood; Open3D's tutorial uses HYBRID radius 0.25,
  * max_nn 100 on a 0.05 voxel grid. With `indices` (n_indices > 0) only those points get a descriptor
- * (neighbourhoods still come from the whole cloud). num_threads 0 = default; the result does not
- * depend on it. @see o3d.pipelines.registration.compute_fpfh_feature
+ * (neighbourhoods still come from the whole cloud), as Open3D: each distinct index once, columns in
+ * ascending index order; an index out of range is an error. num_threads 0 = default; the result does
+ * not depend on it. Each 11-bin sub-histogram sums to 200 (Open3D 0.20 adds the point's own SPFH).
+ * @see o3d.pipelines.registration.compute_fpfh_feature
  */
 O3D_API o3d_status o3d_compute_fpfh_feature(o3d_feature_t** out, const o3d_pointcloud_t* pc,
                                             const o3d_search_param_t* param, const int64_t* indices,

@@ -14,10 +14,6 @@
 #include "o3d/o3d.h"
 #include "o3d_test_util.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
 enum { WITH_NORMALS = 1, WITH_COLORS = 2 };
 
 /* An asymmetric height field sampled by the R2 low-discrepancy sequence, with exact normals and an intensity
@@ -57,21 +53,6 @@ static o3d_pointcloud_t* height_field(size_t n, const double motion[16], int att
     return pc;
 }
 
-/* Rotation by `deg` about the z axis, then translation (tx, ty, tz); and its inverse. */
-static void motion_z(double deg, double tx, double ty, double tz, double m[16], double inv[16]) {
-    const double c = cos(deg * M_PI / 180.0), s = sin(deg * M_PI / 180.0);
-    const double fwd[16] = {c, -s, 0, tx, s, c, 0, ty, 0, 0, 1, tz, 0, 0, 0, 1};
-    const double bwd[16] = {c, s, 0, -(c * tx + s * ty), -s, c, 0, -(-s * tx + c * ty), 0, 0, 1, -tz, 0, 0, 0, 1};
-    memcpy(m, fwd, sizeof fwd);
-    memcpy(inv, bwd, sizeof bwd);
-}
-
-static double max_abs_diff16(const double* a, const double* b) {
-    double m = 0.0;
-    for (int i = 0; i < 16; ++i) m = fmax(m, fabs(a[i] - b[i]));
-    return m;
-}
-
 static void test_new_option_defaults_and_old_structs(void** state) {
     (void)state;
     o3d_icp_options_t o;
@@ -89,7 +70,7 @@ static void test_new_option_defaults_and_old_structs(void** state) {
     assert_int_equal(old.kernel, (int32_t)0xABABABAB); /* untouched beyond struct_size */
     old.estimation = O3D_ESTIMATION_POINT_TO_PLANE;
     double m[16], inv[16];
-    motion_z(3.0, 0.01, 0.0, 0.0, m, inv);
+    o3d_test_motion_z(3.0, 0.01, 0.0, 0.0, m, inv);
     o3d_pointcloud_t* target = height_field(1000, NULL, WITH_NORMALS);
     o3d_pointcloud_t* source = height_field(1000, inv, 0);
     o3d_registration_result_t* r = NULL;
@@ -101,7 +82,7 @@ static void test_new_option_defaults_and_old_structs(void** state) {
 
 static void icp_recovers(int32_t estimation, int32_t kernel, double k, int source_attributes, int target_attributes) {
     double m[16], inv[16];
-    motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
+    o3d_test_motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
     o3d_pointcloud_t* target = height_field(3000, NULL, target_attributes);
     o3d_pointcloud_t* source = height_field(3000, inv, source_attributes);
     o3d_icp_options_t o;
@@ -117,7 +98,7 @@ static void icp_recovers(int32_t estimation, int32_t kernel, double k, int sourc
     o3d_pointcloud_destroy(target);
     double t[16], fitness = 0, rmse = 1;
     assert_int_equal(o3d_registration_result_get_transformation(r, t), O3D_OK);
-    assert_true(max_abs_diff16(t, m) < 1e-7);
+    assert_true(o3d_test_max_abs_diff16(t, m) < 1e-7);
     assert_int_equal(o3d_registration_result_get_fitness(r, &fitness), O3D_OK);
     assert_int_equal(o3d_registration_result_get_inlier_rmse(r, &rmse), O3D_OK);
     assert_true(fitness == 1.0);
@@ -290,7 +271,7 @@ static void test_missing_attributes_and_null(void** state) {
 static void test_thread_count_does_not_change_bits(void** state) {
     (void)state;
     double m[16], inv[16];
-    motion_z(4.0, 0.02, -0.01, 0.02, m, inv);
+    o3d_test_motion_z(4.0, 0.02, -0.01, 0.02, m, inv);
     o3d_pointcloud_t* target = height_field(4000, NULL, WITH_NORMALS | WITH_COLORS);
     o3d_pointcloud_t* source = height_field(3500, inv, WITH_NORMALS | WITH_COLORS);
     const int32_t estimations[] = {O3D_ESTIMATION_COLORED, O3D_ESTIMATION_GENERALIZED, O3D_ESTIMATION_SYMMETRIC};

@@ -13,10 +13,6 @@
 #include "o3d/o3d.h"
 #include "o3d_test_util.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
 /* An asymmetric height field sampled by the R2 low-discrepancy sequence, with exact normals. */
 static o3d_pointcloud_t* height_field(size_t n, const double motion[16]) {
     double* xyz = malloc(3 * n * sizeof(double));
@@ -54,21 +50,6 @@ static o3d_pointcloud_t* cloud_of(const double* xyz, size_t n) {
     return pc;
 }
 
-/* Rotation by `deg` about the z axis, then translation (tx, ty, tz); and its inverse. */
-static void motion_z(double deg, double tx, double ty, double tz, double m[16], double inv[16]) {
-    const double c = cos(deg * M_PI / 180.0), s = sin(deg * M_PI / 180.0);
-    const double fwd[16] = {c, -s, 0, tx, s, c, 0, ty, 0, 0, 1, tz, 0, 0, 0, 1};
-    const double bwd[16] = {c, s, 0, -(c * tx + s * ty), -s, c, 0, -(-s * tx + c * ty), 0, 0, 1, -tz, 0, 0, 0, 1};
-    memcpy(m, fwd, sizeof fwd);
-    memcpy(inv, bwd, sizeof bwd);
-}
-
-static double max_abs_diff16(const double* a, const double* b) {
-    double m = 0.0;
-    for (int i = 0; i < 16; ++i) m = fmax(m, fabs(a[i] - b[i]));
-    return m;
-}
-
 static void test_options_init_defaults(void** state) {
     (void)state;
     o3d_icp_options_t o;
@@ -90,7 +71,7 @@ static void test_options_init_defaults(void** state) {
 
 static void icp_recovers(int32_t estimation) {
     double m[16], inv[16];
-    motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
+    o3d_test_motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
     o3d_pointcloud_t* target = height_field(3000, NULL);
     o3d_pointcloud_t* source = height_field(3000, inv);
     o3d_icp_options_t o;
@@ -105,7 +86,7 @@ static void icp_recovers(int32_t estimation) {
     o3d_pointcloud_destroy(target);
     double t[16], fitness = 0, rmse = 1;
     assert_int_equal(o3d_registration_result_get_transformation(r, t), O3D_OK);
-    assert_true(max_abs_diff16(t, m) < 1e-9);
+    assert_true(o3d_test_max_abs_diff16(t, m) < 1e-9);
     assert_int_equal(o3d_registration_result_get_fitness(r, &fitness), O3D_OK);
     assert_int_equal(o3d_registration_result_get_inlier_rmse(r, &rmse), O3D_OK);
     assert_true(fitness == 1.0);
@@ -136,7 +117,7 @@ static int32_t cancel_on_second_call(double fraction, void* user_data) {
 static void test_icp_cancel(void** state) {
     (void)state;
     double m[16], inv[16];
-    motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
+    o3d_test_motion_z(5.0, 0.03, -0.02, 0.01, m, inv);
     o3d_pointcloud_t* target = height_field(1000, NULL);
     o3d_pointcloud_t* source = height_field(1000, inv);
     o3d_icp_options_t o;
@@ -156,7 +137,7 @@ static void test_icp_cancel(void** state) {
 static void test_icp_thread_count_does_not_change_bits(void** state) {
     (void)state;
     double m[16], inv[16];
-    motion_z(4.0, 0.02, 0.01, -0.01, m, inv);
+    o3d_test_motion_z(4.0, 0.02, 0.01, -0.01, m, inv);
     o3d_pointcloud_t* target = height_field(5000, NULL);
     o3d_pointcloud_t* source = height_field(4000, inv);
     double t[2][16], rmse[2];

@@ -6,7 +6,6 @@
 //! the file extension. Paths must be valid UTF-8 (anything else is an `InvalidArgument` error).
 use std::ffi::CString;
 use std::fmt;
-use std::mem::{size_of, MaybeUninit};
 use std::path::Path;
 use std::ptr::{self, NonNull};
 use std::slice;
@@ -15,6 +14,7 @@ use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{new_cloud, PointCloud};
+use crate::util::init_struct;
 
 pub use crate::feature::{read_feature, write_feature};
 pub use crate::io_geometry::*;
@@ -40,11 +40,8 @@ pub struct WriteOptions {
 
 impl ReadOptions {
     fn to_raw(self) -> Result<sys::o3d_read_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_read_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe { sys::o3d_read_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_read_options_t>() as u32) })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_read_options_t is plain numbers and nullable pointers; o3d_read_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_read_options_init(p, n)) }?;
         raw.remove_nan_points = self.remove_nan_points as i32;
         raw.remove_infinite_points = self.remove_infinite_points as i32;
         Ok(raw)
@@ -53,11 +50,8 @@ impl ReadOptions {
 
 impl WriteOptions {
     fn to_raw(self) -> Result<sys::o3d_write_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_write_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe { sys::o3d_write_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_write_options_t>() as u32) })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_write_options_t is plain numbers and nullable pointers; o3d_write_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_write_options_init(p, n)) }?;
         raw.write_ascii = self.write_ascii as i32;
         raw.compressed = self.compressed as i32;
         Ok(raw)

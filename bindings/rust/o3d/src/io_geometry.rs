@@ -1,5 +1,4 @@
 //! Reading and writing triangle meshes, images and camera models (re-exported from [`crate::io`]).
-use std::mem::{size_of, MaybeUninit};
 use std::path::Path;
 
 use o3d_sys as sys;
@@ -9,6 +8,7 @@ use crate::error::{check, Result};
 use crate::image::{new_image, Image};
 use crate::io::{c_path, c_string, new_buffer, Buffer};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
+use crate::util::init_struct;
 
 /// o3d.io.read_triangle_mesh keyword arguments.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -46,13 +46,8 @@ impl Default for MeshWriteOptions {
 
 impl MeshReadOptions {
     fn to_raw(self) -> Result<sys::o3d_mesh_read_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_mesh_read_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe {
-            sys::o3d_mesh_read_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_mesh_read_options_t>() as u32)
-        })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_mesh_read_options_t is plain numbers and nullable pointers; o3d_mesh_read_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_mesh_read_options_init(p, n)) }?;
         raw.enable_post_processing = self.enable_post_processing as i32;
         Ok(raw)
     }
@@ -60,13 +55,8 @@ impl MeshReadOptions {
 
 impl MeshWriteOptions {
     fn to_raw(self) -> Result<sys::o3d_mesh_write_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_mesh_write_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe {
-            sys::o3d_mesh_write_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_mesh_write_options_t>() as u32)
-        })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_mesh_write_options_t is plain numbers and nullable pointers; o3d_mesh_write_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_mesh_write_options_init(p, n)) }?;
         raw.write_ascii = self.write_ascii as i32;
         raw.compressed = self.compressed as i32;
         raw.write_vertex_normals = self.write_vertex_normals as i32;

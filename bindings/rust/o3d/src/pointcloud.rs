@@ -1,12 +1,12 @@
 //! `PointCloud` (o3d.geometry.PointCloud) and `SearchParam` (KDTreeSearchParam*).
 use std::fmt;
-use std::mem::{size_of, MaybeUninit};
 use std::ptr::{self, NonNull};
 use std::slice;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
+use crate::util::init_struct;
 
 /// Neighbourhood search parameter (Open3D `KDTreeSearchParamKNN` / `Radius` / `Hybrid`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,11 +40,8 @@ impl Default for SearchParam {
 impl SearchParam {
     /// The C struct, started from `o3d_search_param_init` so `struct_size` is right.
     pub(crate) fn to_raw(self) -> Result<sys::o3d_search_param_t> {
-        let mut raw = MaybeUninit::<sys::o3d_search_param_t>::zeroed();
-        // SAFETY: raw is writable and of the size we pass.
-        check(unsafe { sys::o3d_search_param_init(raw.as_mut_ptr(), size_of::<sys::o3d_search_param_t>() as u32) })?;
-        // SAFETY: zeroed then filled by init; every bit pattern is valid for these fields.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_search_param_t is plain numbers and nullable pointers; o3d_search_param_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_search_param_init(p, n)) }?;
         let count = |n: usize| {
             i32::try_from(n)
                 .map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("neighbour count {n} is too large")))

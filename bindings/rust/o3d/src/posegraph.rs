@@ -4,7 +4,7 @@
 //! closures, Choi et al. 2015). Matrices are row-major (`m[row][col]`); an edge (s, t, T) says
 //! that T maps points of node s's frame into node t's: `pose_t^-1 * pose_s ~ T`.
 use std::fmt;
-use std::mem::{size_of, MaybeUninit};
+use std::mem::size_of;
 use std::ops::ControlFlow;
 use std::path::Path;
 use std::ptr::NonNull;
@@ -15,7 +15,7 @@ use crate::error::{check, Error, ErrorCode, Result};
 use crate::io::c_path;
 use crate::progress::with_progress;
 use crate::registration::IDENTITY;
-use crate::util::{adopt, mat4_ptr, to_i32};
+use crate::util::{adopt, init_struct, mat4_ptr, to_i32};
 
 /// The 6x6 identity.
 const IDENTITY6: [[f64; 6]; 6] = {
@@ -110,11 +110,8 @@ impl PoseGraphEdge {
 }
 
 fn raw_edge() -> Result<sys::o3d_pose_graph_edge_t> {
-    let mut raw = MaybeUninit::<sys::o3d_pose_graph_edge_t>::zeroed();
-    // SAFETY: writable struct of the size passed.
-    check(unsafe { sys::o3d_pose_graph_edge_init(raw.as_mut_ptr(), size_of::<sys::o3d_pose_graph_edge_t>() as u32) })?;
-    // SAFETY: zeroed, then filled by init; plain numbers.
-    Ok(unsafe { raw.assume_init() })
+    // SAFETY: o3d_pose_graph_edge_t is plain numbers and nullable pointers; o3d_pose_graph_edge_init is its init.
+    unsafe { init_struct(|p, n| sys::o3d_pose_graph_edge_init(p, n)) }
 }
 
 /// A pose graph: one pose per node (row-major 4x4, a rigid transform) and the edges between them.
@@ -333,16 +330,8 @@ impl Default for GlobalOptimizationOptions {
 }
 
 fn raw_global_options() -> Result<sys::o3d_global_optimization_options_t> {
-    let mut raw = MaybeUninit::<sys::o3d_global_optimization_options_t>::zeroed();
-    // SAFETY: writable struct of the size passed.
-    check(unsafe {
-        sys::o3d_global_optimization_options_init(
-            raw.as_mut_ptr(),
-            size_of::<sys::o3d_global_optimization_options_t>() as u32,
-        )
-    })?;
-    // SAFETY: zeroed (progress = None, user_data = NULL are valid), then filled by init.
-    Ok(unsafe { raw.assume_init() })
+    // SAFETY: o3d_global_optimization_options_t is plain numbers and nullable pointers; o3d_global_optimization_options_init is its init.
+    unsafe { init_struct(|p, n| sys::o3d_global_optimization_options_init(p, n)) }
 }
 
 impl GlobalOptimizationOptions {

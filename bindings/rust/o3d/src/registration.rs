@@ -2,7 +2,6 @@
 //! generalized, symmetric, with robust kernels), evaluation, information matrix; features and
 //! global registration (RANSAC, FGR, [`registration_global`](crate::registration)); pose graphs
 //! and global optimization. Transformations are row-major 4x4 (`[[f64; 4]; 4]`, `m[row][col]`).
-use std::mem::{size_of, MaybeUninit};
 use std::ops::ControlFlow;
 use std::ptr::{self, NonNull};
 
@@ -11,6 +10,7 @@ use o3d_sys as sys;
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{copy_out, PointCloud};
 use crate::progress::with_progress;
+use crate::util::init_struct;
 
 pub use crate::feature::{
     compute_fpfh_feature, compute_fpfh_feature_with, correspondences_from_features, Feature, MatchOptions,
@@ -209,11 +209,8 @@ impl IcpOptions {
 }
 
 fn raw_icp_options() -> Result<sys::o3d_icp_options_t> {
-    let mut raw = MaybeUninit::<sys::o3d_icp_options_t>::zeroed();
-    // SAFETY: writable struct of the size passed.
-    check(unsafe { sys::o3d_icp_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_icp_options_t>() as u32) })?;
-    // SAFETY: zeroed (progress = None, user_data = NULL are valid), then filled by init.
-    Ok(unsafe { raw.assume_init() })
+    // SAFETY: o3d_icp_options_t is plain numbers and nullable pointers; o3d_icp_options_init is its init.
+    unsafe { init_struct(|p, n| sys::o3d_icp_options_init(p, n)) }
 }
 
 /// Result of a registration (o3d.pipelines.registration.RegistrationResult).

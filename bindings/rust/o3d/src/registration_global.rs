@@ -1,6 +1,5 @@
 //! Global registration (re-exported by [`crate::registration`]): correspondence checkers, RANSAC
 //! over feature matches or given correspondences, Fast Global Registration.
-use std::mem::{size_of, MaybeUninit};
 use std::ops::ControlFlow;
 use std::ptr;
 
@@ -11,7 +10,7 @@ use crate::feature::Feature;
 use crate::pointcloud::PointCloud;
 use crate::progress::with_progress;
 use crate::registration::{read_result, Estimation, RegistrationResult};
-use crate::util::{mat4_ptr, to_i32};
+use crate::util::{init_struct, mat4_ptr, to_i32};
 
 /// A test that prunes RANSAC hypotheses early (Open3D's `CorrespondenceChecker*`). The threshold
 /// must be finite and positive.
@@ -38,17 +37,8 @@ impl CorrespondenceChecker {
     }
 
     fn raw_default(kind: i32) -> Result<sys::o3d_correspondence_checker_t> {
-        let mut raw = MaybeUninit::<sys::o3d_correspondence_checker_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe {
-            sys::o3d_correspondence_checker_init(
-                raw.as_mut_ptr(),
-                size_of::<sys::o3d_correspondence_checker_t>() as u32,
-                kind,
-            )
-        })?;
-        // SAFETY: zeroed, then filled by init; plain numbers.
-        Ok(unsafe { raw.assume_init() })
+        // SAFETY: o3d_correspondence_checker_t is plain numbers and nullable pointers; o3d_correspondence_checker_init is its init.
+        unsafe { init_struct(|p, n| sys::o3d_correspondence_checker_init(p, n, kind)) }
     }
 
     pub(crate) fn to_raw(self) -> Result<sys::o3d_correspondence_checker_t> {
@@ -147,11 +137,8 @@ impl Default for RansacOptions {
 }
 
 fn raw_ransac_options() -> Result<sys::o3d_ransac_options_t> {
-    let mut raw = MaybeUninit::<sys::o3d_ransac_options_t>::zeroed();
-    // SAFETY: writable struct of the size passed.
-    check(unsafe { sys::o3d_ransac_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_ransac_options_t>() as u32) })?;
-    // SAFETY: zeroed (progress = None, user_data = NULL are valid), then filled by init.
-    Ok(unsafe { raw.assume_init() })
+    // SAFETY: o3d_ransac_options_t is plain numbers and nullable pointers; o3d_ransac_options_init is its init.
+    unsafe { init_struct(|p, n| sys::o3d_ransac_options_init(p, n)) }
 }
 
 impl RansacOptions {
@@ -389,11 +376,8 @@ impl Default for FgrOptions {
 }
 
 fn raw_fgr_options() -> Result<sys::o3d_fgr_options_t> {
-    let mut raw = MaybeUninit::<sys::o3d_fgr_options_t>::zeroed();
-    // SAFETY: writable struct of the size passed.
-    check(unsafe { sys::o3d_fgr_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_fgr_options_t>() as u32) })?;
-    // SAFETY: zeroed (progress = None, user_data = NULL are valid), then filled by init.
-    Ok(unsafe { raw.assume_init() })
+    // SAFETY: o3d_fgr_options_t is plain numbers and nullable pointers; o3d_fgr_options_init is its init.
+    unsafe { init_struct(|p, n| sys::o3d_fgr_options_init(p, n)) }
 }
 
 impl FgrOptions {

@@ -1,16 +1,15 @@
 //! `RgbdImage` (o3d.geometry.RGBDImage) and the back-projection of depth / RGB-D images to point
 //! clouds (PointCloud.create_from_depth_image / create_from_rgbd_image).
 use std::fmt;
-use std::mem::{size_of, MaybeUninit};
 use std::ptr::{self, NonNull};
 
 use o3d_sys as sys;
 
 use crate::camera::PinholeIntrinsic;
-use crate::error::{check, Result};
+use crate::error::Result;
 use crate::image::{new_image, Image};
 use crate::pointcloud::{new_cloud, PointCloud};
-use crate::util::{adopt, mat4_ptr};
+use crate::util::{adopt, init_struct, mat4_ptr};
 
 /// RGBDImage.create_from_color_and_depth keyword arguments (Open3D's defaults).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,11 +30,8 @@ impl Default for RgbdOptions {
 
 impl RgbdOptions {
     fn to_raw(self) -> Result<sys::o3d_rgbd_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_rgbd_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe { sys::o3d_rgbd_options_init(raw.as_mut_ptr(), size_of::<sys::o3d_rgbd_options_t>() as u32) })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_rgbd_options_t is plain numbers and nullable pointers; o3d_rgbd_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_rgbd_options_init(p, n)) }?;
         raw.depth_scale = self.depth_scale;
         raw.depth_trunc = self.depth_trunc;
         raw.convert_rgb_to_intensity = self.convert_rgb_to_intensity as i32;
@@ -156,16 +152,8 @@ impl Default for DepthToCloudOptions {
 
 impl DepthToCloudOptions {
     fn to_raw(self) -> Result<sys::o3d_depth_to_cloud_options_t> {
-        let mut raw = MaybeUninit::<sys::o3d_depth_to_cloud_options_t>::zeroed();
-        // SAFETY: writable struct of the size passed.
-        check(unsafe {
-            sys::o3d_depth_to_cloud_options_init(
-                raw.as_mut_ptr(),
-                size_of::<sys::o3d_depth_to_cloud_options_t>() as u32,
-            )
-        })?;
-        // SAFETY: zeroed, then filled by init.
-        let mut raw = unsafe { raw.assume_init() };
+        // SAFETY: o3d_depth_to_cloud_options_t is plain numbers and nullable pointers; o3d_depth_to_cloud_options_init is its init.
+        let mut raw = unsafe { init_struct(|p, n| sys::o3d_depth_to_cloud_options_init(p, n)) }?;
         raw.depth_scale = self.depth_scale;
         raw.depth_trunc = self.depth_trunc;
         raw.stride = self.stride;

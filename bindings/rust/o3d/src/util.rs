@@ -1,4 +1,5 @@
 //! Small helpers shared by the handle wrappers: handle adoption, integer narrowing, optional arrays.
+use std::mem::{size_of, MaybeUninit};
 use std::ptr::{self, NonNull};
 
 use o3d_sys as sys;
@@ -17,6 +18,18 @@ pub(crate) fn adopt<H, T>(
     NonNull::new(out)
         .map(wrap)
         .ok_or_else(|| Error::new(ErrorCode::Internal, format!("the library reported success but returned no {what}")))
+}
+
+/// A versioned C struct filled by its `*_init(ptr, struct_size)` (called as `init(ptr, size)`), so its
+/// `struct_size` and defaults are the library's.
+///
+/// # Safety
+/// All-zero bytes must be a valid `T` (numbers, nullable function pointers, raw pointers), and `init`
+/// must write at most `size` bytes through its pointer.
+pub(crate) unsafe fn init_struct<T>(init: impl FnOnce(*mut T, u32) -> sys::o3d_status) -> Result<T> {
+    let mut raw = MaybeUninit::<T>::zeroed();
+    check(init(raw.as_mut_ptr(), size_of::<T>() as u32))?;
+    Ok(raw.assume_init())
 }
 
 /// `n` as the C API's `int32_t`, or an `InvalidArgument` error naming the parameter.

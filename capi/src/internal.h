@@ -172,7 +172,7 @@ o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
 /// @brief Validate a per-call thread count (0 = library default, negative is invalid).
 int to_num_threads(int32_t num_threads);
 /// @brief A row-major 4x4 (16 doubles) as a matrix; NULL means identity. Non-finite entries are
-/// rejected with InvalidArgument naming `name`. (Defined in registration_global.cpp.)
+/// rejected with InvalidArgument naming `name`. (Defined in registration.cpp.)
 Eigen::Matrix4d read_transform(const double* m, const char* name);
 
 }  // namespace o3d::capi

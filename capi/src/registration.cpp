@@ -38,19 +38,6 @@ reg::RobustKernel to_kernel(int32_t kernel, double k, const char* name) {
     return out;
 }
 
-/// Row-major 16 doubles -> 4x4; NULL means identity.
-Eigen::Matrix4d read_transform(const double* m, const char* name) {
-    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
-    if (!m) return t;
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            if (!std::isfinite(m[4 * r + c]))
-                throw o3d::InvalidArgument(std::string(name) + "[" + std::to_string(4 * r + c) + "] is not finite");
-            t(r, c) = m[4 * r + c];
-        }
-    return t;
-}
-
 reg::IcpOptions to_core(const o3d_icp_options_t& o) {
     reg::IcpOptions out;
     switch (o.estimation) {
@@ -92,6 +79,22 @@ o3d_registration_result_t* wrap(reg::RegistrationResult&& r) {
 
 }  // namespace
 
+namespace o3d::capi {
+
+Eigen::Matrix4d read_transform(const double* m, const char* name) {
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    if (!m) return t;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            if (!std::isfinite(m[4 * r + c]))
+                throw o3d::InvalidArgument(std::string(name) + "[" + std::to_string(4 * r + c) + "] is not finite");
+            t(r, c) = m[4 * r + c];
+        }
+    return t;
+}
+
+}  // namespace o3d::capi
+
 extern "C" {
 
 O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct_size) {
@@ -115,7 +118,7 @@ O3D_API o3d_status o3d_register_icp(o3d_registration_result_t** out, const o3d_p
         *out = nullptr;
         o3d::capi::require(source, "source");
         o3d::capi::require(target, "target");
-        const Eigen::Matrix4d t0 = read_transform(init, "init");
+        const Eigen::Matrix4d t0 = o3d::capi::read_transform(init, "init");
         const reg::IcpOptions options = to_core(o3d::capi::read_options(opts, kIcpDefaults, "opts"));
         *out = wrap(reg::registration_icp(source->cloud, target->cloud, max_correspondence_distance, t0, options));
     });
@@ -129,7 +132,7 @@ O3D_API o3d_status o3d_evaluate_registration(o3d_registration_result_t** out, co
         *out = nullptr;
         o3d::capi::require(source, "source");
         o3d::capi::require(target, "target");
-        const Eigen::Matrix4d t = read_transform(transformation, "transformation");
+        const Eigen::Matrix4d t = o3d::capi::read_transform(transformation, "transformation");
         *out = wrap(reg::evaluate_registration(source->cloud, target->cloud, max_correspondence_distance, t));
     });
 }
@@ -142,7 +145,7 @@ O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointc
         o3d::capi::require(out, "out");
         o3d::capi::require(source, "source");
         o3d::capi::require(target, "target");
-        const Eigen::Matrix4d t = read_transform(transformation, "transformation");
+        const Eigen::Matrix4d t = o3d::capi::read_transform(transformation, "transformation");
         const Eigen::Matrix<double, 6, 6> info =
             reg::get_information_matrix_from_point_clouds(source->cloud, target->cloud, max_correspondence_distance, t);
         for (int r = 0; r < 6; ++r)

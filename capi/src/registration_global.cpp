@@ -139,22 +139,6 @@ o3d_registration_result_t* wrap(reg::RegistrationResult&& r) {
 
 }  // namespace
 
-namespace o3d::capi {
-
-Eigen::Matrix4d read_transform(const double* m, const char* name) {
-    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
-    if (!m) return t;
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            if (!std::isfinite(m[4 * r + c]))
-                throw InvalidArgument(std::string(name) + "[" + std::to_string(4 * r + c) + "] is not finite");
-            t(r, c) = m[4 * r + c];
-        }
-    return t;
-}
-
-}  // namespace o3d::capi
-
 extern "C" {
 
 O3D_API o3d_status o3d_correspondence_checker_init(o3d_correspondence_checker_t* checker, uint32_t struct_size,

@@ -7,4 +7,4 @@ scripts/install-deps.sh
 [ -x .venv/bin/python ] || python3 -m venv .venv
 .venv/bin/pip install -q numpy
 .venv/bin/pip install -q .
-.venv/bin/python examples/demo/demo.py "${1:-}"
+.venv/bin/python examples/demo/demo.py "$@"

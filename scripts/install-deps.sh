@@ -9,7 +9,7 @@ if [ "$(id -u)" != "0" ]; then SUDO="sudo"; fi
 
 PACKAGES=(
   # build
-  cmake ninja-build pkg-config g++ clang git ca-certificates
+  cmake ninja-build pkg-config g++ clang libclang-dev doxygen git ca-certificates
   # core
   libeigen3-dev libflann-dev liblz4-dev liblzf-dev libqhull-dev
   # images, meshes and camera files

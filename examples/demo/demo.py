@@ -36,7 +36,7 @@ def step(message, fn):
 
 
 def main():
-    out_dir = sys.argv[1] if len(sys.argv) > 1 else tempfile.mkdtemp(prefix="o3d-demo-")
+    out_dir = sys.argv[1] if len(sys.argv) > 1 and sys.argv[1] else tempfile.mkdtemp(prefix="o3d-demo-")
     os.makedirs(out_dir, exist_ok=True)
     print(f"o3d {o3d.__version__}: Figure 1 of the Open3D paper on a synthesized scan")
 

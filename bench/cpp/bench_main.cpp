@@ -96,17 +96,17 @@ PcPtr make_pc(const Cloud& c, bool with_normals = true, bool with_colors = true)
     o3d_pointcloud_t* p = nullptr;
     ck(o3d_pointcloud_create(&p), "o3d_pointcloud_create");
     PcPtr pc(p);
-    ck(o3d_pointcloud_set_points(pc.get(), c.pts.data(), c.size()), "o3d_pointcloud_set_points");
+    ck(o3d_pointcloud_set_array(pc.get(), O3D_POINTCLOUD_POINTS, c.pts.data(), c.size()), "o3d_pointcloud_set_points");
     if (with_normals && !c.nrm.empty())
-        ck(o3d_pointcloud_set_normals(pc.get(), c.nrm.data(), c.size()), "o3d_pointcloud_set_normals");
+        ck(o3d_pointcloud_set_array(pc.get(), O3D_POINTCLOUD_NORMALS, c.nrm.data(), c.size()), "o3d_pointcloud_set_normals");
     if (with_colors && !c.col.empty())
-        ck(o3d_pointcloud_set_colors(pc.get(), c.col.data(), c.size()), "o3d_pointcloud_set_colors");
+        ck(o3d_pointcloud_set_array(pc.get(), O3D_POINTCLOUD_COLORS, c.col.data(), c.size()), "o3d_pointcloud_set_colors");
     return pc;
 }
 
 size_t pc_size(const o3d_pointcloud_t* pc) {
     size_t n = 0;
-    ck(o3d_pointcloud_size(pc, &n), "o3d_pointcloud_size");
+    ck(o3d_pointcloud_size(&n, pc), "o3d_pointcloud_size");
     return n;
 }
 
@@ -116,12 +116,12 @@ bool o3d_load(const std::string& path, Cloud& out) {
     PcPtr pc(p);
     const double* d = nullptr;
     size_t n = 0;
-    if (o3d_pointcloud_points_view(pc.get(), &d, &n) != O3D_OK || n == 0) return false;
+    if (o3d_pointcloud_array_view(&d, &n, pc.get(), O3D_POINTCLOUD_POINTS) != O3D_OK || n == 0) return false;
     out.pts.assign(d, d + 3 * n);
     out.nrm.clear();
     out.col.clear();
-    if (o3d_pointcloud_normals_view(pc.get(), &d, &n) == O3D_OK && n == out.size()) out.nrm.assign(d, d + 3 * n);
-    if (o3d_pointcloud_colors_view(pc.get(), &d, &n) == O3D_OK && n == out.size()) out.col.assign(d, d + 3 * n);
+    if (o3d_pointcloud_array_view(&d, &n, pc.get(), O3D_POINTCLOUD_NORMALS) == O3D_OK && n == out.size()) out.nrm.assign(d, d + 3 * n);
+    if (o3d_pointcloud_array_view(&d, &n, pc.get(), O3D_POINTCLOUD_COLORS) == O3D_OK && n == out.size()) out.col.assign(d, d + 3 * n);
     return true;
 }
 
@@ -236,11 +236,11 @@ void run_o3d(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
                 o3d_kdtree_t* tree = nullptr;
                 ck(o3d_kdtree_create_from_pointcloud(&tree, pc.get()), "o3d_kdtree_create_from_pointcloud");
                 o3d_search_result_t* r = nullptr;
-                const o3d_status s = o3d_kdtree_search(tree, c.pts.data(), c.size(), &sp, 0, &r);
+                const o3d_status s = o3d_kdtree_search(&r, tree, c.pts.data(), c.size(), &sp, 0);
                 o3d_kdtree_destroy(tree);
                 ck(s, "o3d_kdtree_search");
                 size_t nq = 0;
-                o3d_search_result_counts(r, &nq, &total);
+                o3d_search_result_counts(&nq, &total, r);
                 o3d_search_result_destroy(r);
             },
             [&] { return pts_info(total, "nbrs"); });
@@ -259,7 +259,7 @@ void run_o3d(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
                 [&] { ck(o3d_pointcloud_estimate_normals(pc.get(), &sp, 0), "o3d_pointcloud_estimate_normals"); },
                 [&] {
                     size_t n = 0;
-                    o3d_pointcloud_get_normals(pc.get(), nullptr, 0, &n);
+                    o3d_pointcloud_get_array(nullptr, 0, &n, pc.get(), O3D_POINTCLOUD_NORMALS);
                     return pts_info(n, "normals");
                 });
         });
@@ -279,7 +279,7 @@ void run_o3d(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
                         o3d_registration_result_t* r = nullptr;
                         ck(o3d_register_icp(&r, src.get(), tgt.get(), ic.max_distance, ic.init.data(), &opt),
                            "o3d_register_icp");
-                        o3d_registration_result_get_transformation(r, T);
+                        o3d_registration_result_get_transformation(T, r);
                         o3d_registration_result_destroy(r);
                     },
                     [&] { return icp_summary(ic, T); });
@@ -299,8 +299,8 @@ void run_o3d(const Config& cfg, const std::map<std::string, Cloud>& clouds, cons
             [&] {
                 o3d_feature_t* f = nullptr;
                 ck(o3d_compute_fpfh_feature(&f, pc.get(), &sp, nullptr, 0, 0), "o3d_compute_fpfh_feature");
-                o3d_feature_dimension(f, &dim);
-                o3d_feature_num(f, &num);
+                o3d_feature_dimension(&dim, f);
+                o3d_feature_num(&num, f);
                 o3d_feature_destroy(f);
             },
             [&] { return std::to_string(dim) + "x" + std::to_string(num) + " (hybrid, max_nn 100)"; });
@@ -322,9 +322,9 @@ Cloud fpfh_input(const Cloud& bin0) {
     Cloud out;
     const double* v = nullptr;
     size_t n = 0;
-    ck(o3d_pointcloud_points_view(down.get(), &v, &n), "points_view");
+    ck(o3d_pointcloud_array_view(&v, &n, down.get(), O3D_POINTCLOUD_POINTS), "points_view");
     out.pts.assign(v, v + 3 * n);
-    ck(o3d_pointcloud_normals_view(down.get(), &v, &n), "normals_view");
+    ck(o3d_pointcloud_array_view(&v, &n, down.get(), O3D_POINTCLOUD_NORMALS), "normals_view");
     out.nrm.assign(v, v + 3 * n);
     return out;
 }
@@ -339,8 +339,8 @@ std::string icp_summary(const IcpCase& c, const double T[16]) {
         o3d_registration_result_t* r = nullptr;
         ck(o3d_evaluate_registration(&r, src.get(), tgt.get(), c.max_distance, T), "o3d_evaluate_registration");
         double fit = 0, rmse = 0;
-        o3d_registration_result_get_fitness(r, &fit);
-        o3d_registration_result_get_inlier_rmse(r, &rmse);
+        o3d_registration_result_get_fitness(&fit, r);
+        o3d_registration_result_get_inlier_rmse(&rmse, r);
         o3d_registration_result_destroy(r);
         std::snprintf(b, sizeof b, "fit %.4f rmse %.5f", fit, rmse);
         s = b;

@@ -283,7 +283,7 @@ static void o3dx_octree_node_info_origin(const o3d_octree_node_info_t *info, dou
                           int32_t *out_grid_index, int32_t out_index[ANY], int32_t *out_included }
 %apply const int32_t *O3D_IN { const int32_t *pairs }
 %include "o3d/boundingbox.h"
-%include "o3d/hull.h"
+
 %include "o3d/lineset.h"
 %clear double *out;
 /* voxelgrid.h / octree.h: `double *out` and the root's size / depth / found flag are scalars */

@@ -65,7 +65,7 @@ O3D_API o3d_status o3d_obb_create_from_axis_aligned_bounding_box(o3d_obb_t* out,
     });
 }
 
-O3D_API o3d_status o3d_obb_get_box_points(const o3d_obb_t* obb, double out[24]) {
+O3D_API o3d_status o3d_obb_get_box_points(double out[24], const o3d_obb_t* obb) {
     return guard(__func__, [&] {
         const OrientedBoundingBox box = from_c(obb);
         require(out, "out");
@@ -76,8 +76,8 @@ O3D_API o3d_status o3d_obb_get_box_points(const o3d_obb_t* obb, double out[24]) 
     });
 }
 
-O3D_API o3d_status o3d_obb_get_point_indices_within(const o3d_obb_t* obb, const double* xyz, size_t n,
-                                                    int32_t* out_indices, size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_obb_get_point_indices_within(int32_t* out_indices, size_t capacity, size_t* out_n,
+                                                    const o3d_obb_t* obb, const double* xyz, size_t n) {
     return guard(__func__, [&] {
         const OrientedBoundingBox box = from_c(obb);
         require(out_n, "out_n");
@@ -87,8 +87,7 @@ O3D_API o3d_status o3d_obb_get_point_indices_within(const o3d_obb_t* obb, const 
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_box(const o3d_pointcloud_t* pc, int32_t robust,
-                                                            o3d_obb_t* out) {
+O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_box(o3d_obb_t* out, const o3d_pointcloud_t* pc, int32_t robust) {
     return guard(__func__, [&] {
         const auto& points = require(pc, "pc")->cloud.points;
         require(out, "out");
@@ -96,8 +95,8 @@ O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_box(const o3d_pointcloud
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(const o3d_trianglemesh_t* mesh, int32_t robust,
-                                                              o3d_obb_t* out) {
+O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(o3d_obb_t* out, const o3d_trianglemesh_t* mesh,
+                                                              int32_t robust) {
     return guard(__func__, [&] {
         const auto& vertices = require(mesh, "mesh")->mesh.vertices;
         require(out, "out");

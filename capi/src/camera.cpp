@@ -40,7 +40,7 @@ O3D_API o3d_status o3d_camera_trajectory_create(o3d_camera_trajectory_t** out) {
 
 O3D_API void o3d_camera_trajectory_destroy(o3d_camera_trajectory_t* trajectory) { delete trajectory; }
 
-O3D_API o3d_status o3d_camera_trajectory_size(const o3d_camera_trajectory_t* trajectory, size_t* out_n) {
+O3D_API o3d_status o3d_camera_trajectory_size(size_t* out_n, const o3d_camera_trajectory_t* trajectory) {
     return o3d::capi::guard(__func__, [&] {
         require(trajectory, "trajectory");
         require(out_n, "out_n");
@@ -48,8 +48,8 @@ O3D_API o3d_status o3d_camera_trajectory_size(const o3d_camera_trajectory_t* tra
     });
 }
 
-O3D_API o3d_status o3d_camera_trajectory_get(const o3d_camera_trajectory_t* trajectory, size_t index,
-                                             o3d_pinhole_intrinsic_t* out_intrinsic, double out_extrinsic[16]) {
+O3D_API o3d_status o3d_camera_trajectory_get(o3d_pinhole_intrinsic_t* out_intrinsic, double out_extrinsic[16],
+                                             const o3d_camera_trajectory_t* trajectory, size_t index) {
     return o3d::capi::guard(__func__, [&] {
         require(trajectory, "trajectory");
         const auto& list = trajectory->trajectory.parameters;
@@ -84,7 +84,7 @@ O3D_API o3d_status o3d_camera_trajectory_clear(o3d_camera_trajectory_t* trajecto
     });
 }
 
-O3D_API o3d_status o3d_io_read_pinhole_camera_intrinsic(const char* path, o3d_pinhole_intrinsic_t* out) {
+O3D_API o3d_status o3d_io_read_pinhole_camera_intrinsic(o3d_pinhole_intrinsic_t* out, const char* path) {
     return o3d::capi::guard(__func__, [&] {
         require(path, "path");
         require(out, "out");
@@ -100,8 +100,8 @@ O3D_API o3d_status o3d_io_write_pinhole_camera_intrinsic(const char* path, const
     });
 }
 
-O3D_API o3d_status o3d_io_read_pinhole_camera_parameters(const char* path, o3d_pinhole_intrinsic_t* out_intrinsic,
-                                                         double out_extrinsic[16]) {
+O3D_API o3d_status o3d_io_read_pinhole_camera_parameters(o3d_pinhole_intrinsic_t* out_intrinsic,
+                                                         double out_extrinsic[16], const char* path) {
     return o3d::capi::guard(__func__, [&] {
         require(path, "path");
         const o3d::camera::PinholeCameraParameters p = o3d::camera::read_pinhole_camera_parameters(path);

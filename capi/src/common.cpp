@@ -103,7 +103,7 @@ O3D_API int32_t o3d_get_num_threads(void) { return o3d::utility::resolve_num_thr
 
 O3D_API void o3d_buffer_destroy(o3d_buffer_t* buffer) { delete buffer; }
 
-O3D_API o3d_status o3d_buffer_view(const o3d_buffer_t* buffer, const uint8_t** out_data, size_t* out_size) {
+O3D_API o3d_status o3d_buffer_view(const uint8_t** out_data, size_t* out_size, const o3d_buffer_t* buffer) {
     return guard(__func__, [&] {
         require(buffer, "buffer");
         require(out_data, "out_data");
@@ -113,7 +113,7 @@ O3D_API o3d_status o3d_buffer_view(const o3d_buffer_t* buffer, const uint8_t** o
     });
 }
 
-O3D_API o3d_status o3d_buffer_get_data(const o3d_buffer_t* buffer, uint8_t* out, size_t capacity, size_t* out_size) {
+O3D_API o3d_status o3d_buffer_get_data(uint8_t* out, size_t capacity, size_t* out_size, const o3d_buffer_t* buffer) {
     return guard(__func__, [&] {
         require(buffer, "buffer");
         o3d::capi::copy_out(buffer->bytes.data(), buffer->bytes.size(), out, capacity, out_size);

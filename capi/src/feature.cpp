@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/feature.h"
 #include "o3d/io/feature_io.h"
@@ -40,9 +41,39 @@ T** require_out(T** out) {
     return out;
 }
 
+/// @brief The descriptors as rows: Eigen stores the dimension x num matrix column by column, so row i
+/// (descriptor i) is contiguous. set_array keeps the dimension and takes `rows` descriptors.
+template <typename In>
+void assign_descriptors(Feature& f, const In* src, size_t rows) {
+    const auto dim = f.data.rows();
+    check_size(static_cast<size_t>(dim), rows);
+    Eigen::MatrixXd m(dim, static_cast<Eigen::Index>(rows));
+    for (Eigen::Index i = 0; i < m.size(); ++i) {
+        m.data()[i] = static_cast<double>(src[i]);
+        if (!std::isfinite(m.data()[i])) throw o3d::InvalidArgument("feature values must be finite");
+    }
+    f.data = std::move(m);
+}
+
+o3d::capi::ArraySlot<double> feature_slot(o3d_feature_t* h, int32_t which) {
+    Feature& f = feature_of(h);
+    if (which != O3D_FEATURE_DATA) o3d::capi::bad_which(which, "a feature array (O3D_FEATURE_DATA)");
+    o3d::capi::ArraySlot<double> s;
+    s.data = f.data.size() ? f.data.data() : nullptr;
+    s.rows = static_cast<size_t>(f.data.cols());
+    s.cols = static_cast<size_t>(f.data.rows());
+    s.present = f.data.size() > 0;
+    s.assign = [&f](const double* src, size_t rows) { assign_descriptors(f, src, rows); };
+    s.assign_f32 = [&f](const float* src, size_t rows) { assign_descriptors(f, src, rows); };
+    return s;
+}
+
 }  // namespace
 
 extern "C" {
+
+O3D_CAPI_ARRAYS_F64(feature, o3d_feature_t, feature_slot)
+O3D_CAPI_HAS_ARRAY(feature, o3d_feature_t, feature_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_feature_create(o3d_feature_t** out, size_t dimension, size_t num) {
     return guard(__func__, [&] {
@@ -82,14 +113,14 @@ O3D_API o3d_status o3d_feature_clone(o3d_feature_t** out, const o3d_feature_t* f
     });
 }
 
-O3D_API o3d_status o3d_feature_dimension(const o3d_feature_t* feature, size_t* out) {
+O3D_API o3d_status o3d_feature_dimension(size_t* out, const o3d_feature_t* feature) {
     return guard(__func__, [&] {
         const Feature& f = feature_of(feature);
         *require(out, "out") = f.dimension();
     });
 }
 
-O3D_API o3d_status o3d_feature_num(const o3d_feature_t* feature, size_t* out) {
+O3D_API o3d_status o3d_feature_num(size_t* out, const o3d_feature_t* feature) {
     return guard(__func__, [&] {
         const Feature& f = feature_of(feature);
         *require(out, "out") = f.num();
@@ -103,22 +134,6 @@ O3D_API o3d_status o3d_feature_resize(o3d_feature_t* feature, size_t dimension, 
         // The overlapping block keeps its values (all of them when only num changes), the rest is zero.
         f.data.conservativeResizeLike(
             Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dimension), static_cast<Eigen::Index>(num)));
-    });
-}
-
-O3D_API o3d_status o3d_feature_data(o3d_feature_t* feature, double** out_data) {
-    return guard(__func__, [&] {
-        Feature& f = feature_of(feature);
-        *require(out_data, "out_data") = f.data.size() ? f.data.data() : nullptr;
-    });
-}
-
-O3D_API o3d_status o3d_feature_get_data(const o3d_feature_t* feature, double* out, size_t capacity) {
-    return guard(__func__, [&] {
-        const Feature& f = feature_of(feature);
-        const size_t count = static_cast<size_t>(f.data.size());
-        if (count > 0) require(out, "out");
-        o3d::capi::copy_out(f.data.data(), count, out, capacity, static_cast<size_t*>(nullptr));
     });
 }
 
@@ -168,10 +183,10 @@ O3D_API o3d_status o3d_compute_fpfh_feature(o3d_feature_t** out, const o3d_point
     });
 }
 
-O3D_API o3d_status o3d_correspondences_from_features(const o3d_feature_t* source, const o3d_feature_t* target,
+O3D_API o3d_status o3d_correspondences_from_features(int32_t* out, size_t capacity, size_t* out_n,
+                                                     const o3d_feature_t* source, const o3d_feature_t* target,
                                                      int32_t mutual_filter, double mutual_consistency_ratio,
-                                                     int32_t num_threads, int32_t* out, size_t capacity,
-                                                     size_t* out_n) {
+                                                     int32_t num_threads) {
     return guard(__func__, [&] {
         const Feature& s = feature_of(source);
         const Feature& t = feature_of(target);

@@ -8,7 +8,8 @@
 #include "internal.h"
 #include "o3d/geometry/convex_hull.h"
 #include "o3d/geometry/hidden_point_removal.h"
-#include "o3d/hull.h"
+#include "o3d/pointcloud.h"
+#include "o3d/trianglemesh.h"
 
 using o3d::capi::guard;
 using o3d::capi::require;
@@ -38,9 +39,9 @@ o3d_trianglemesh_t** require_out(o3d_trianglemesh_t** out_mesh) {
 
 extern "C" {
 
-O3D_API o3d_status o3d_pointcloud_compute_convex_hull(o3d_trianglemesh_t** out_mesh, const o3d_pointcloud_t* pc,
-                                                      int32_t joggle_inputs, int32_t* out_point_indices,
-                                                      size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_compute_convex_hull(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                      size_t capacity, size_t* out_n, const o3d_pointcloud_t* pc,
+                                                      int32_t joggle_inputs) {
     return guard(__func__, [&]() -> o3d_status {
         require_out(out_mesh);
         const auto& points = require(pc, "pc")->cloud.points;
@@ -49,10 +50,9 @@ O3D_API o3d_status o3d_pointcloud_compute_convex_hull(o3d_trianglemesh_t** out_m
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_compute_convex_hull(o3d_trianglemesh_t** out_mesh,
-                                                        const o3d_trianglemesh_t* mesh, int32_t joggle_inputs,
-                                                        int32_t* out_point_indices, size_t capacity,
-                                                        size_t* out_n) {
+O3D_API o3d_status o3d_trianglemesh_compute_convex_hull(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                        size_t capacity, size_t* out_n,
+                                                        const o3d_trianglemesh_t* mesh, int32_t joggle_inputs) {
     return guard(__func__, [&]() -> o3d_status {
         require_out(out_mesh);
         const auto& vertices = require(mesh, "mesh")->mesh.vertices;
@@ -61,10 +61,9 @@ O3D_API o3d_status o3d_trianglemesh_compute_convex_hull(o3d_trianglemesh_t** out
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_hidden_point_removal(o3d_trianglemesh_t** out_mesh, const o3d_pointcloud_t* pc,
-                                                       const double camera_location[3], double radius,
-                                                       int32_t* out_point_indices, size_t capacity,
-                                                       size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_hidden_point_removal(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                       size_t capacity, size_t* out_n, const o3d_pointcloud_t* pc,
+                                                       const double camera_location[3], double radius) {
     return guard(__func__, [&]() -> o3d_status {
         require_out(out_mesh);
         const auto& points = require(pc, "pc")->cloud.points;

@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/geometry/image_ops.h"
 #include "o3d/io/image_io.h"
@@ -57,7 +58,28 @@ o3d_status image_property(const char* function, const o3d_image_t* image, T* out
 
 }  // namespace
 
+namespace {
+
+/// @brief The pixel bytes as rows of one byte; replacing them keeps the image's shape.
+o3d::capi::ArraySlot<uint8_t> image_slot(o3d_image_t* h, int32_t which) {
+    Image& img = o3d::capi::require(h, "image")->image;
+    if (which != O3D_IMAGE_DATA) o3d::capi::bad_which(which, "an image array (O3D_IMAGE_DATA)");
+    o3d::capi::ArraySlot<uint8_t> s = o3d::capi::flat_slot(img.data, 1, !img.data.empty());
+    s.assign = [&img](const uint8_t* src, size_t rows) {
+        if (rows != img.data.size())
+            throw o3d::InvalidArgument("image data needs " + std::to_string(img.data.size()) + " bytes, got " +
+                                       std::to_string(rows));
+        std::copy(src, src + rows, img.data.begin());
+    };
+    return s;
+}
+
+}  // namespace
+
 extern "C" {
+
+O3D_CAPI_ARRAYS(image, o3d_image_t, uint8_t, image_slot)
+O3D_CAPI_HAS_ARRAY(image, o3d_image_t, image_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_image_create(o3d_image_t** out, int32_t width, int32_t height, int32_t num_channels,
                                     int32_t bytes_per_channel) {
@@ -96,45 +118,17 @@ O3D_API o3d_status o3d_image_clone(o3d_image_t** out, const o3d_image_t* src) {
     });
 }
 
-O3D_API o3d_status o3d_image_width(const o3d_image_t* image, int32_t* out) {
+O3D_API o3d_status o3d_image_width(int32_t* out, const o3d_image_t* image) {
     return image_property(__func__, image, out, &Image::width);
 }
-O3D_API o3d_status o3d_image_height(const o3d_image_t* image, int32_t* out) {
+O3D_API o3d_status o3d_image_height(int32_t* out, const o3d_image_t* image) {
     return image_property(__func__, image, out, &Image::height);
 }
-O3D_API o3d_status o3d_image_num_channels(const o3d_image_t* image, int32_t* out) {
+O3D_API o3d_status o3d_image_num_channels(int32_t* out, const o3d_image_t* image) {
     return image_property(__func__, image, out, &Image::num_channels);
 }
-O3D_API o3d_status o3d_image_bytes_per_channel(const o3d_image_t* image, int32_t* out) {
+O3D_API o3d_status o3d_image_bytes_per_channel(int32_t* out, const o3d_image_t* image) {
     return image_property(__func__, image, out, &Image::bytes_per_channel);
-}
-
-O3D_API o3d_status o3d_image_data_view(const o3d_image_t* image, const uint8_t** out_data, size_t* out_size) {
-    return o3d::capi::guard(__func__, [&] {
-        o3d::capi::require(image, "image");
-        o3d::capi::require(out_data, "out_data");
-        o3d::capi::require(out_size, "out_size");
-        *out_data = image->image.data.data();
-        *out_size = image->image.data.size();
-    });
-}
-
-O3D_API o3d_status o3d_image_data_mutable_view(o3d_image_t* image, uint8_t** out_data, size_t* out_size) {
-    return o3d::capi::guard(__func__, [&] {
-        o3d::capi::require(image, "image");
-        o3d::capi::require(out_data, "out_data");
-        o3d::capi::require(out_size, "out_size");
-        *out_data = image->image.data.data();
-        *out_size = image->image.data.size();
-    });
-}
-
-O3D_API o3d_status o3d_image_get_data(const o3d_image_t* image, uint8_t* out, size_t capacity, size_t* out_size) {
-    return o3d::capi::guard(__func__, [&] {
-        o3d::capi::require(image, "image");
-        const std::vector<uint8_t>& bytes = image->image.data;
-        o3d::capi::copy_out(bytes.data(), bytes.size(), out, capacity, out_size);
-    });
 }
 
 O3D_API o3d_status o3d_image_filter(o3d_image_t** out, const o3d_image_t* image, int32_t filter_type) {

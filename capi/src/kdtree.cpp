@@ -83,9 +83,9 @@ void search(const o3d_kdtree_t* tree, const T* queries, size_t num_queries, cons
 }
 
 template <typename T>
-void copy_all(const std::vector<T>& src, T* out, size_t capacity) {
-    require(out, "out");
-    o3d::capi::copy_out(src.data(), src.size(), out, capacity, static_cast<size_t*>(nullptr));
+void copy_all(const std::vector<T>& src, T* out, size_t capacity, size_t* out_n) {
+    require(out_n, "out_n");
+    o3d::capi::copy_out(src.data(), src.size(), out, capacity, out_n);
 }
 
 }  // namespace
@@ -110,7 +110,7 @@ O3D_API o3d_status o3d_kdtree_create_from_points(o3d_kdtree_t** out, const doubl
 
 O3D_API void o3d_kdtree_destroy(o3d_kdtree_t* tree) { delete tree; }
 
-O3D_API o3d_status o3d_kdtree_size(const o3d_kdtree_t* tree, size_t* out_n) {
+O3D_API o3d_status o3d_kdtree_size(size_t* out_n, const o3d_kdtree_t* tree) {
     return guard(__func__, [&] {
         const o3d_kdtree& t = *require(tree, "tree");
         *require(out_n, "out_n") = t.tree ? t.tree->size() : t.tree_xd->size();
@@ -140,16 +140,16 @@ O3D_API o3d_status o3d_kdtree_create_from_points_xd(o3d_kdtree_t** out, const do
     });
 }
 
-O3D_API o3d_status o3d_kdtree_dimension(const o3d_kdtree_t* tree, size_t* out) {
+O3D_API o3d_status o3d_kdtree_dimension(size_t* out, const o3d_kdtree_t* tree) {
     return guard(__func__, [&] {
         const o3d_kdtree& t = *require(tree, "tree");
         *require(out, "out") = t.tree ? 3 : t.tree_xd->dimension();
     });
 }
 
-O3D_API o3d_status o3d_kdtree_search_xd(const o3d_kdtree_t* tree, const double* queries, size_t num_queries,
-                                        size_t dimension, const o3d_search_param_t* param, int32_t num_threads,
-                                        o3d_search_result_t** out) {
+O3D_API o3d_status o3d_kdtree_search_xd(o3d_search_result_t** out, const o3d_kdtree_t* tree, const double* queries,
+                                        size_t num_queries, size_t dimension, const o3d_search_param_t* param,
+                                        int32_t num_threads) {
     return guard(__func__, [&] {
         require(out, "out");
         *out = nullptr;
@@ -170,22 +170,20 @@ O3D_API o3d_status o3d_kdtree_search_xd(const o3d_kdtree_t* tree, const double* 
     });
 }
 
-O3D_API o3d_status o3d_kdtree_search(const o3d_kdtree_t* tree, const double* queries, size_t num_queries,
-                                     const o3d_search_param_t* param, int32_t num_threads,
-                                     o3d_search_result_t** out) {
+O3D_API o3d_status o3d_kdtree_search(o3d_search_result_t** out, const o3d_kdtree_t* tree, const double* queries,
+                                     size_t num_queries, const o3d_search_param_t* param, int32_t num_threads) {
     return guard(__func__, [&] { search(tree, queries, num_queries, param, num_threads, out); });
 }
 
-O3D_API o3d_status o3d_kdtree_search_f32(const o3d_kdtree_t* tree, const float* queries, size_t num_queries,
-                                         const o3d_search_param_t* param, int32_t num_threads,
-                                         o3d_search_result_t** out) {
+O3D_API o3d_status o3d_kdtree_search_f32(o3d_search_result_t** out, const o3d_kdtree_t* tree, const float* queries,
+                                         size_t num_queries, const o3d_search_param_t* param, int32_t num_threads) {
     return guard(__func__, [&] { search(tree, queries, num_queries, param, num_threads, out); });
 }
 
 O3D_API void o3d_search_result_destroy(o3d_search_result_t* result) { delete result; }
 
-O3D_API o3d_status o3d_search_result_counts(const o3d_search_result_t* result, size_t* out_num_queries,
-                                            size_t* out_total) {
+O3D_API o3d_status o3d_search_result_counts(size_t* out_num_queries, size_t* out_total,
+                                            const o3d_search_result_t* result) {
     return guard(__func__, [&] {
         const auto& r = result_of(result);
         require(out_num_queries, "out_num_queries");
@@ -195,8 +193,8 @@ O3D_API o3d_status o3d_search_result_counts(const o3d_search_result_t* result, s
     });
 }
 
-O3D_API o3d_status o3d_search_result_view(const o3d_search_result_t* result, const int64_t** out_offsets,
-                                          const int32_t** out_indices, const double** out_distances2) {
+O3D_API o3d_status o3d_search_result_view(const int64_t** out_offsets, const int32_t** out_indices,
+                                          const double** out_distances2, const o3d_search_result_t* result) {
     return guard(__func__, [&] {
         const auto& r = result_of(result);
         require(out_offsets, "out_offsets");
@@ -208,17 +206,19 @@ O3D_API o3d_status o3d_search_result_view(const o3d_search_result_t* result, con
     });
 }
 
-O3D_API o3d_status o3d_search_result_get_offsets(const o3d_search_result_t* result, int64_t* out, size_t capacity) {
-    return guard(__func__, [&] { copy_all(result_of(result).offsets, out, capacity); });
+O3D_API o3d_status o3d_search_result_get_offsets(int64_t* out, size_t capacity, size_t* out_n,
+                                                 const o3d_search_result_t* result) {
+    return guard(__func__, [&] { copy_all(result_of(result).offsets, out, capacity, out_n); });
 }
 
-O3D_API o3d_status o3d_search_result_get_indices(const o3d_search_result_t* result, int32_t* out, size_t capacity) {
-    return guard(__func__, [&] { copy_all(result_of(result).indices, out, capacity); });
+O3D_API o3d_status o3d_search_result_get_indices(int32_t* out, size_t capacity, size_t* out_n,
+                                                 const o3d_search_result_t* result) {
+    return guard(__func__, [&] { copy_all(result_of(result).indices, out, capacity, out_n); });
 }
 
-O3D_API o3d_status o3d_search_result_get_distances2(const o3d_search_result_t* result, double* out,
-                                                    size_t capacity) {
-    return guard(__func__, [&] { copy_all(result_of(result).distances2, out, capacity); });
+O3D_API o3d_status o3d_search_result_get_distances2(double* out, size_t capacity, size_t* out_n,
+                                                    const o3d_search_result_t* result) {
+    return guard(__func__, [&] { copy_all(result_of(result).distances2, out, capacity, out_n); });
 }
 
 }  // extern "C"

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/geometry/line_set_ops.h"
 #include "o3d/lineset.h"
@@ -17,18 +18,19 @@ namespace {
 LineSet& lines_of(o3d_lineset_t* l, const char* name = "lineset") { return require(l, name)->lineset; }
 const LineSet& lines_of(const o3d_lineset_t* l, const char* name = "lineset") { return require(l, name)->lineset; }
 
-std::vector<Eigen::Vector3d>& double_array(LineSet& l, int32_t which) {
+o3d::capi::ArraySlot<double> lineset_slot(o3d_lineset_t* h, int32_t which) {
+    LineSet& l = lines_of(h);
     switch (which) {
-        case O3D_LINESET_POINTS: return l.points;
-        case O3D_LINESET_COLORS: return l.colors;
-        default:
-            throw o3d::InvalidArgument("which " + std::to_string(which) +
-                                       " is not a line-set array (O3D_LINESET_POINTS, O3D_LINESET_COLORS)");
+        case O3D_LINESET_POINTS: return o3d::capi::eigen_slot(l.points, l.has_points());
+        case O3D_LINESET_COLORS: return o3d::capi::eigen_slot(l.colors, l.has_colors());
+        default: o3d::capi::bad_which(which, "a float64 line-set array (O3D_LINESET_POINTS, O3D_LINESET_COLORS)");
     }
 }
 
-const std::vector<Eigen::Vector3d>& double_array(const LineSet& l, int32_t which) {
-    return double_array(const_cast<LineSet&>(l), which);
+o3d::capi::ArraySlot<int32_t> lineset_index_slot(o3d_lineset_t* h, int32_t which) {
+    LineSet& l = lines_of(h);
+    if (which != O3D_LINESET_LINES) o3d::capi::bad_which(which, "an int32 line-set array (O3D_LINESET_LINES)");
+    return o3d::capi::eigen_slot(l.lines, l.has_lines());
 }
 
 void check_input(const void* data, size_t rows, size_t row_bytes, const char* name) {
@@ -58,6 +60,10 @@ void give(o3d_lineset_t** out, LineSet lines) {
 
 extern "C" {
 
+O3D_CAPI_ARRAYS_F64(lineset, o3d_lineset_t, lineset_slot)
+O3D_CAPI_HAS_ARRAY(lineset, o3d_lineset_t, lineset_slot, lineset_index_slot)
+O3D_CAPI_INDEX_ARRAYS(lineset, o3d_lineset_t, lineset_index_slot)
+
 O3D_API o3d_status o3d_lineset_create(o3d_lineset_t** out) {
     return guard(__func__, [&] { give(require_out(out), LineSet{}); });
 }
@@ -71,68 +77,12 @@ O3D_API o3d_status o3d_lineset_clone(o3d_lineset_t** out, const o3d_lineset_t* s
     });
 }
 
-O3D_API o3d_status o3d_lineset_num_points(const o3d_lineset_t* lineset, size_t* out_n) {
+O3D_API o3d_status o3d_lineset_num_points(size_t* out_n, const o3d_lineset_t* lineset) {
     return guard(__func__, [&] { *require(out_n, "out_n") = lines_of(lineset).points.size(); });
 }
 
-O3D_API o3d_status o3d_lineset_num_lines(const o3d_lineset_t* lineset, size_t* out_n) {
+O3D_API o3d_status o3d_lineset_num_lines(size_t* out_n, const o3d_lineset_t* lineset) {
     return guard(__func__, [&] { *require(out_n, "out_n") = lines_of(lineset).lines.size(); });
-}
-
-O3D_API o3d_status o3d_lineset_set_array(o3d_lineset_t* lineset, int32_t which, const double* data, size_t rows) {
-    return guard(__func__, [&] {
-        std::vector<Eigen::Vector3d>& target = double_array(lines_of(lineset), which);
-        check_input(data, rows, 3 * sizeof(double), "data");
-        std::vector<Eigen::Vector3d> copy(rows);
-        for (size_t i = 0; i < rows; ++i) copy[i] = Eigen::Vector3d(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
-        target = std::move(copy);
-    });
-}
-
-O3D_API o3d_status o3d_lineset_get_array(const o3d_lineset_t* lineset, int32_t which, double* out, size_t capacity,
-                                         size_t* out_rows) {
-    return guard(__func__, [&] {
-        const std::vector<Eigen::Vector3d>& a = double_array(lines_of(lineset), which);
-        require(out_rows, "out_rows");
-        o3d::capi::copy_out<double>(a.empty() ? nullptr : a[0].data(), a.size(), out, capacity, out_rows, 3);
-    });
-}
-
-O3D_API o3d_status o3d_lineset_array_view(const o3d_lineset_t* lineset, int32_t which, const double** out_data,
-                                          size_t* out_rows) {
-    return guard(__func__, [&] {
-        const std::vector<Eigen::Vector3d>& a = double_array(lines_of(lineset), which);
-        *require(out_data, "out_data") = a.empty() ? nullptr : a[0].data();
-        *require(out_rows, "out_rows") = a.size();
-    });
-}
-
-O3D_API o3d_status o3d_lineset_set_lines(o3d_lineset_t* lineset, const int32_t* data, size_t rows) {
-    return guard(__func__, [&] {
-        LineSet& l = lines_of(lineset);
-        check_input(data, rows, 2 * sizeof(int32_t), "data");
-        std::vector<Eigen::Vector2i> copy(rows);
-        for (size_t i = 0; i < rows; ++i) copy[i] = Eigen::Vector2i(data[2 * i], data[2 * i + 1]);
-        l.lines = std::move(copy);
-    });
-}
-
-O3D_API o3d_status o3d_lineset_get_lines(const o3d_lineset_t* lineset, int32_t* out, size_t capacity,
-                                         size_t* out_rows) {
-    return guard(__func__, [&] {
-        const LineSet& l = lines_of(lineset);
-        require(out_rows, "out_rows");
-        o3d::capi::copy_out<int32_t>(l.lines.empty() ? nullptr : l.lines[0].data(), l.lines.size(), out, capacity,
-                                     out_rows, 2);
-    });
-}
-
-O3D_API o3d_status o3d_lineset_lines_view(const o3d_lineset_t* lineset, const int32_t** out_data, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const LineSet& l = lines_of(lineset);
-        *require(out_data, "out_data") = l.lines.empty() ? nullptr : l.lines[0].data();
-        *require(out_rows, "out_rows") = l.lines.size();
-    });
 }
 
 O3D_API o3d_status o3d_lineset_paint_uniform_color(o3d_lineset_t* lineset, const double rgb[3]) {

@@ -37,8 +37,8 @@ O3D_API o3d_status o3d_octree_convert_from_point_cloud(o3d_octree_t* octree, con
     });
 }
 
-O3D_API o3d_status o3d_octree_get_root(const o3d_octree_t* octree, double out_origin[3], double* out_size,
-                                       int32_t* out_max_depth) {
+O3D_API o3d_status o3d_octree_get_root(double out_origin[3], double* out_size, int32_t* out_max_depth,
+                                       const o3d_octree_t* octree) {
     return guard(__func__, [&] {
         const Octree& tree = require(octree, "octree")->octree;
         if (out_origin)
@@ -48,16 +48,16 @@ O3D_API o3d_status o3d_octree_get_root(const o3d_octree_t* octree, double out_or
     });
 }
 
-O3D_API o3d_status o3d_octree_num_leaf_nodes(const o3d_octree_t* octree, size_t* out_n) {
+O3D_API o3d_status o3d_octree_num_leaf_nodes(size_t* out_n, const o3d_octree_t* octree) {
     return guard(__func__, [&] {
         const Octree& tree = require(octree, "octree")->octree;
         *require(out_n, "out_n") = o3d::geometry::count_leaves(tree);
     });
 }
 
-O3D_API o3d_status o3d_octree_locate_leaf_node(const o3d_octree_t* octree, const double point[3], int32_t* out_found,
-                                               o3d_octree_node_info_t* out_info, double out_color[3],
-                                               int32_t* out_indices, size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_octree_locate_leaf_node(int32_t* out_found, o3d_octree_node_info_t* out_info,
+                                               double out_color[3], int32_t* out_indices, size_t capacity,
+                                               size_t* out_n, const o3d_octree_t* octree, const double point[3]) {
     return guard(__func__, [&] {
         const Octree& tree = require(octree, "octree")->octree;
         require(point, "point");

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/geometry/distances.h"
 #include "o3d/geometry/down_sample.h"
@@ -52,29 +53,6 @@ namespace {
 PointCloud& cloud_of(o3d_pointcloud_t* pc, const char* name = "pc") { return require(pc, name)->cloud; }
 const PointCloud& cloud_of(const o3d_pointcloud_t* pc, const char* name = "pc") { return require(pc, name)->cloud; }
 
-template <typename T>
-void set_rows(Vec3List& dst, const T* data, size_t n, const char* name) {
-    if (n > 0 && !data) throw o3d::InvalidArgument(std::string(name) + " is NULL but n = " + std::to_string(n));
-    Vec3List rows(n);
-    for (size_t i = 0; i < n; ++i)
-        rows[i] = Eigen::Vector3d(static_cast<double>(data[3 * i]), static_cast<double>(data[3 * i + 1]),
-                                  static_cast<double>(data[3 * i + 2]));
-    dst = std::move(rows);
-}
-
-void get_rows(const Vec3List& src, double* out, size_t capacity, size_t* out_n) {
-    require(out_n, "out_n");
-    o3d::capi::copy_out(src.empty() ? nullptr : src[0].data(), src.size(), out, capacity, out_n, 3);
-}
-
-template <typename Ptr>
-void view_rows(const Vec3List& src, Ptr* out_data, size_t* out_n) {
-    require(out_data, "out_data");
-    require(out_n, "out_n");
-    *out_data = src.empty() ? nullptr : const_cast<Ptr>(src[0].data());
-    *out_n = src.size();
-}
-
 void write3(double* out, const char* name, const Eigen::Vector3d& v) {
     require(out, name);
     out[0] = v.x();
@@ -114,9 +92,42 @@ void compute_out(size_t count, double* out, size_t capacity, size_t* out_n, Comp
     o3d::capi::copy_out(values.data(), values.size(), out, capacity, out_n);
 }
 
+
+/// @brief Array `which` (O3D_POINTCLOUD_*) of the cloud. Covariances are symmetric by definition, so
+/// their column-major storage is also their row-major layout; set_array rejects asymmetric ones.
+o3d::capi::ArraySlot<double> cloud_slot(o3d_pointcloud_t* pc, int32_t which) {
+    PointCloud& c = cloud_of(pc);
+    switch (which) {
+        case O3D_POINTCLOUD_POINTS: return o3d::capi::eigen_slot(c.points, c.has_points());
+        case O3D_POINTCLOUD_NORMALS: return o3d::capi::eigen_slot(c.normals, c.has_normals());
+        case O3D_POINTCLOUD_COLORS: return o3d::capi::eigen_slot(c.colors, c.has_colors());
+        case O3D_POINTCLOUD_COVARIANCES: {
+            o3d::capi::ArraySlot<double> s;
+            s.data = c.covariances.empty() ? nullptr : c.covariances[0].data();
+            s.rows = c.covariances.size();
+            s.cols = 9;
+            s.present = c.has_covariances();
+            s.assign = [&c](const double* src, size_t rows) {
+                std::vector<Eigen::Matrix3d> m(rows);
+                for (size_t i = 0; i < rows; ++i) {
+                    m[i] = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(src + 9 * i);
+                    if (!(m[i] - m[i].transpose()).isZero(1e-12 * (1.0 + m[i].cwiseAbs().maxCoeff())))
+                        throw o3d::InvalidArgument("covariance " + std::to_string(i) + " is not symmetric");
+                }
+                c.covariances = std::move(m);
+            };
+            return s;
+        }
+        default: o3d::capi::bad_which(which, "an O3D_POINTCLOUD_* array");
+    }
+}
+
 }  // namespace
 
 extern "C" {
+
+O3D_CAPI_ARRAYS_F64(pointcloud, o3d_pointcloud_t, cloud_slot)
+O3D_CAPI_HAS_ARRAY(pointcloud, o3d_pointcloud_t, cloud_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_pointcloud_create(o3d_pointcloud_t** out) {
     return guard(__func__, [&] { give(require_out(out), PointCloud{}); });
@@ -131,31 +142,10 @@ O3D_API o3d_status o3d_pointcloud_clone(o3d_pointcloud_t** out, const o3d_pointc
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_size(const o3d_pointcloud_t* pc, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_size(size_t* out_n, const o3d_pointcloud_t* pc) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         *require(out_n, "out_n") = c.size();
-    });
-}
-
-O3D_API o3d_status o3d_pointcloud_has_points(const o3d_pointcloud_t* pc, int32_t* out) {
-    return guard(__func__, [&] {
-        const PointCloud& c = cloud_of(pc);
-        *require(out, "out") = c.has_points() ? 1 : 0;
-    });
-}
-
-O3D_API o3d_status o3d_pointcloud_has_normals(const o3d_pointcloud_t* pc, int32_t* out) {
-    return guard(__func__, [&] {
-        const PointCloud& c = cloud_of(pc);
-        *require(out, "out") = c.has_normals() ? 1 : 0;
-    });
-}
-
-O3D_API o3d_status o3d_pointcloud_has_colors(const o3d_pointcloud_t* pc, int32_t* out) {
-    return guard(__func__, [&] {
-        const PointCloud& c = cloud_of(pc);
-        *require(out, "out") = c.has_colors() ? 1 : 0;
     });
 }
 
@@ -163,69 +153,6 @@ O3D_API o3d_status o3d_pointcloud_clear(o3d_pointcloud_t* pc) {
     return guard(__func__, [&] { cloud_of(pc).clear(); });
 }
 
-O3D_API o3d_status o3d_pointcloud_set_points(o3d_pointcloud_t* pc, const double* xyz, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).points, xyz, n, "xyz"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_set_points_f32(o3d_pointcloud_t* pc, const float* xyz, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).points, xyz, n, "xyz"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_set_normals(o3d_pointcloud_t* pc, const double* xyz, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).normals, xyz, n, "xyz"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_set_normals_f32(o3d_pointcloud_t* pc, const float* xyz, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).normals, xyz, n, "xyz"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_set_colors(o3d_pointcloud_t* pc, const double* rgb, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).colors, rgb, n, "rgb"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_set_colors_f32(o3d_pointcloud_t* pc, const float* rgb, size_t n) {
-    return guard(__func__, [&] { set_rows(cloud_of(pc).colors, rgb, n, "rgb"); });
-}
-
-O3D_API o3d_status o3d_pointcloud_get_points(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                             size_t* out_n) {
-    return guard(__func__, [&] { get_rows(cloud_of(pc).points, out, capacity, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_get_normals(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                              size_t* out_n) {
-    return guard(__func__, [&] { get_rows(cloud_of(pc).normals, out, capacity, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_get_colors(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                             size_t* out_n) {
-    return guard(__func__, [&] { get_rows(cloud_of(pc).colors, out, capacity, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_points_view(const o3d_pointcloud_t* pc, const double** out_data, size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).points, out_data, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_normals_view(const o3d_pointcloud_t* pc, const double** out_data,
-                                               size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).normals, out_data, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_colors_view(const o3d_pointcloud_t* pc, const double** out_data, size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).colors, out_data, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_points_mutable_view(o3d_pointcloud_t* pc, double** out_data, size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).points, out_data, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_normals_mutable_view(o3d_pointcloud_t* pc, double** out_data, size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).normals, out_data, out_n); });
-}
-
-O3D_API o3d_status o3d_pointcloud_colors_mutable_view(o3d_pointcloud_t* pc, double** out_data, size_t* out_n) {
-    return guard(__func__, [&] { view_rows(cloud_of(pc).colors, out_data, out_n); });
-}
 
 O3D_API o3d_status o3d_pointcloud_append(o3d_pointcloud_t* pc, const o3d_pointcloud_t* other) {
     return guard(__func__, [&] {
@@ -272,29 +199,29 @@ O3D_API o3d_status o3d_pointcloud_scale(o3d_pointcloud_t* pc, double scale, cons
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_get_min_bound(const o3d_pointcloud_t* pc, double out[3]) {
+O3D_API o3d_status o3d_pointcloud_get_min_bound(double out[3], const o3d_pointcloud_t* pc) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         write3(out, "out", o3d::geometry::min_bound(c));
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_get_max_bound(const o3d_pointcloud_t* pc, double out[3]) {
+O3D_API o3d_status o3d_pointcloud_get_max_bound(double out[3], const o3d_pointcloud_t* pc) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         write3(out, "out", o3d::geometry::max_bound(c));
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_get_center(const o3d_pointcloud_t* pc, double out[3]) {
+O3D_API o3d_status o3d_pointcloud_get_center(double out[3], const o3d_pointcloud_t* pc) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         write3(out, "out", o3d::geometry::center(c));
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_get_axis_aligned_bounding_box(const o3d_pointcloud_t* pc, double out_min[3],
-                                                                double out_max[3]) {
+O3D_API o3d_status o3d_pointcloud_get_axis_aligned_bounding_box(double out_min[3], double out_max[3],
+                                                                const o3d_pointcloud_t* pc) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         require(out_min, "out_min");
@@ -402,9 +329,8 @@ O3D_API o3d_status o3d_pointcloud_orient_normals_towards_camera_location(o3d_poi
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_compute_nearest_neighbor_distance(const o3d_pointcloud_t* pc, double* out,
-                                                                   size_t capacity, size_t* out_n,
-                                                                   int32_t num_threads) {
+O3D_API o3d_status o3d_pointcloud_compute_nearest_neighbor_distance(double* out, size_t capacity, size_t* out_n,
+                                                                   const o3d_pointcloud_t* pc, int32_t num_threads) {
     return guard(__func__, [&] {
         const PointCloud& c = cloud_of(pc);
         const int threads = o3d::capi::to_num_threads(num_threads);
@@ -413,10 +339,9 @@ O3D_API o3d_status o3d_pointcloud_compute_nearest_neighbor_distance(const o3d_po
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(const o3d_pointcloud_t* source,
-                                                               const o3d_pointcloud_t* target, double* out,
-                                                               size_t capacity, size_t* out_n,
-                                                               int32_t num_threads) {
+O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(double* out, size_t capacity, size_t* out_n,
+                                                               const o3d_pointcloud_t* source,
+                                                               const o3d_pointcloud_t* target, int32_t num_threads) {
     return guard(__func__, [&] {
         const PointCloud& s = cloud_of(source, "source");
         const PointCloud& t = cloud_of(target, "target");

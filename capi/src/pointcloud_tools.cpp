@@ -69,9 +69,10 @@ Eigen::Vector3d vec3(const double* v, const char* name) {
 
 extern "C" {
 
-O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
-                                                             int32_t nb_neighbors, double std_ratio,
-                                                             int32_t* out_indices, size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** out, int32_t* out_indices,
+                                                             size_t capacity, size_t* out_n,
+                                                             const o3d_pointcloud_t* pc, int32_t nb_neighbors,
+                                                             double std_ratio) {
     return guard(__func__, [&]() -> o3d_status {
         require_out(out);
         require(out_n, "out_n");
@@ -82,9 +83,9 @@ O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** 
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_remove_radius_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
-                                                        int32_t nb_points, double radius, int32_t* out_indices,
-                                                        size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_remove_radius_outlier(o3d_pointcloud_t** out, int32_t* out_indices, size_t capacity,
+                                                        size_t* out_n, const o3d_pointcloud_t* pc, int32_t nb_points,
+                                                        double radius) {
     return guard(__func__, [&]() -> o3d_status {
         require_out(out);
         require(out_n, "out_n");
@@ -108,10 +109,10 @@ O3D_API o3d_status o3d_pointcloud_crop_aabb(o3d_pointcloud_t** out, const o3d_po
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_segment_plane(const o3d_pointcloud_t* pc, double distance_threshold,
+O3D_API o3d_status o3d_pointcloud_segment_plane(double out_plane[4], int32_t* out_indices, size_t capacity,
+                                                size_t* out_n, const o3d_pointcloud_t* pc, double distance_threshold,
                                                 int32_t ransac_n, int32_t num_iterations, double probability,
-                                                uint64_t seed, double out_plane[4], int32_t* out_indices,
-                                                size_t capacity, size_t* out_n) {
+                                                uint64_t seed) {
     return guard(__func__, [&]() -> o3d_status {
         const PointCloud& cloud = nonempty_cloud(pc);
         require(out_plane, "out_plane");
@@ -126,8 +127,8 @@ O3D_API o3d_status o3d_pointcloud_segment_plane(const o3d_pointcloud_t* pc, doub
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_cluster_dbscan(const o3d_pointcloud_t* pc, double eps, int32_t min_points,
-                                                 int32_t* out_labels, size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_cluster_dbscan(int32_t* out_labels, size_t capacity, size_t* out_n,
+                                                 const o3d_pointcloud_t* pc, double eps, int32_t min_points) {
     return guard(__func__, [&]() -> o3d_status {
         const PointCloud& cloud = nonempty_cloud(pc);
         require_finite(eps, "eps");
@@ -144,8 +145,8 @@ O3D_API o3d_status o3d_pointcloud_cluster_dbscan(const o3d_pointcloud_t* pc, dou
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(const o3d_pointcloud_t* pc, double out_mean[3],
-                                                              double out_covariance[9]) {
+O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(double out_mean[3], double out_covariance[9],
+                                                              const o3d_pointcloud_t* pc) {
     return guard(__func__, [&]() -> o3d_status {
         const PointCloud& cloud = nonempty_cloud(pc);
         require(out_mean, "out_mean");
@@ -159,8 +160,8 @@ O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(const o3d_pointclo
     });
 }
 
-O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(const o3d_pointcloud_t* pc, double* out,
-                                                               size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(double* out, size_t capacity, size_t* out_n,
+                                                               const o3d_pointcloud_t* pc) {
     return guard(__func__, [&]() -> o3d_status {
         const PointCloud& cloud = nonempty_cloud(pc);
         check_buffer(cloud.size(), out, capacity, out_n);

@@ -162,14 +162,14 @@ O3D_API o3d_status o3d_pose_graph_clone(o3d_pose_graph_t** out, const o3d_pose_g
     });
 }
 
-O3D_API o3d_status o3d_pose_graph_num_nodes(const o3d_pose_graph_t* graph, size_t* out) {
+O3D_API o3d_status o3d_pose_graph_num_nodes(size_t* out, const o3d_pose_graph_t* graph) {
     return o3d::capi::guard(__func__, [&] {
         require(graph, "graph");
         *require(out, "out") = graph->graph.nodes.size();
     });
 }
 
-O3D_API o3d_status o3d_pose_graph_num_edges(const o3d_pose_graph_t* graph, size_t* out) {
+O3D_API o3d_status o3d_pose_graph_num_edges(size_t* out, const o3d_pose_graph_t* graph) {
     return o3d::capi::guard(__func__, [&] {
         require(graph, "graph");
         *require(out, "out") = graph->graph.edges.size();
@@ -185,7 +185,7 @@ O3D_API o3d_status o3d_pose_graph_add_node(o3d_pose_graph_t* graph, const double
     });
 }
 
-O3D_API o3d_status o3d_pose_graph_get_node(const o3d_pose_graph_t* graph, size_t index, double out_pose[16]) {
+O3D_API o3d_status o3d_pose_graph_get_node(double out_pose[16], const o3d_pose_graph_t* graph, size_t index) {
     return o3d::capi::guard(__func__, [&] {
         require(graph, "graph");
         require(out_pose, "out_pose");
@@ -210,8 +210,8 @@ O3D_API o3d_status o3d_pose_graph_add_edge(o3d_pose_graph_t* graph, const o3d_po
     });
 }
 
-O3D_API o3d_status o3d_pose_graph_get_edge(const o3d_pose_graph_t* graph, size_t index,
-                                           o3d_pose_graph_edge_t* out_edge) {
+O3D_API o3d_status o3d_pose_graph_get_edge(o3d_pose_graph_edge_t* out_edge, const o3d_pose_graph_t* graph,
+                                           size_t index) {
     return o3d::capi::guard(__func__, [&] {
         require(graph, "graph");
         require(out_edge, "out_edge");
@@ -260,8 +260,8 @@ O3D_API o3d_status o3d_global_optimization_options_init(o3d_global_optimization_
     return o3d::capi::guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kOptionsDefaults, "opts"); });
 }
 
-O3D_API o3d_status o3d_global_optimization(o3d_pose_graph_t* graph, const o3d_global_optimization_options_t* opts,
-                                           o3d_global_optimization_summary_t* summary) {
+O3D_API o3d_status o3d_global_optimization(o3d_global_optimization_summary_t* summary, o3d_pose_graph_t* graph,
+                                           const o3d_global_optimization_options_t* opts) {
     return o3d::capi::guard(__func__, [&] {
         require(graph, "graph");
         const reg::GlobalOptimizationOptions options =

@@ -101,7 +101,7 @@ O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct
     return o3d::capi::guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kIcpDefaults, "opts"); });
 }
 
-O3D_API o3d_status o3d_robust_kernel_weight(int32_t kernel, double k, double residual, double* out) {
+O3D_API o3d_status o3d_robust_kernel_weight(double* out, int32_t kernel, double k, double residual) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(out, "out");
         const reg::RobustKernel core = to_kernel(kernel, k, "kernel");
@@ -137,10 +137,10 @@ O3D_API o3d_status o3d_evaluate_registration(o3d_registration_result_t** out, co
     });
 }
 
-O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointcloud_t* source,
+O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(double out[36], const o3d_pointcloud_t* source,
                                                                 const o3d_pointcloud_t* target,
                                                                 double max_correspondence_distance,
-                                                                const double transformation[16], double out[36]) {
+                                                                const double transformation[16]) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(out, "out");
         o3d::capi::require(source, "source");
@@ -155,8 +155,7 @@ O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointc
 
 O3D_API void o3d_registration_result_destroy(o3d_registration_result_t* result) { delete result; }
 
-O3D_API o3d_status o3d_registration_result_get_transformation(const o3d_registration_result_t* result,
-                                                              double out[16]) {
+O3D_API o3d_status o3d_registration_result_get_transformation(double out[16], const o3d_registration_result_t* result) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(result, "result");
         o3d::capi::require(out, "out");
@@ -165,22 +164,22 @@ O3D_API o3d_status o3d_registration_result_get_transformation(const o3d_registra
     });
 }
 
-O3D_API o3d_status o3d_registration_result_get_fitness(const o3d_registration_result_t* result, double* out) {
+O3D_API o3d_status o3d_registration_result_get_fitness(double* out, const o3d_registration_result_t* result) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(result, "result");
         *o3d::capi::require(out, "out") = result->result.fitness;
     });
 }
 
-O3D_API o3d_status o3d_registration_result_get_inlier_rmse(const o3d_registration_result_t* result, double* out) {
+O3D_API o3d_status o3d_registration_result_get_inlier_rmse(double* out, const o3d_registration_result_t* result) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(result, "result");
         *o3d::capi::require(out, "out") = result->result.inlier_rmse;
     });
 }
 
-O3D_API o3d_status o3d_registration_result_get_correspondence_set(const o3d_registration_result_t* result,
-                                                                  int32_t* out, size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_registration_result_get_correspondence_set(int32_t* out, size_t capacity, size_t* out_n,
+                                                                  const o3d_registration_result_t* result) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(result, "result");
         if (!out && !out_n) throw o3d::InvalidArgument("out and out_n are both NULL");

@@ -150,10 +150,10 @@ O3D_API o3d_status o3d_correspondence_checker_init(o3d_correspondence_checker_t*
     });
 }
 
-O3D_API o3d_status o3d_correspondence_checker_check(const o3d_correspondence_checker_t* checker,
+O3D_API o3d_status o3d_correspondence_checker_check(int32_t* out_passed, const o3d_correspondence_checker_t* checker,
                                                     const o3d_pointcloud_t* source, const o3d_pointcloud_t* target,
                                                     const int32_t* corres, size_t num_corres,
-                                                    const double transformation[16], int32_t* out_passed) {
+                                                    const double transformation[16]) {
     return o3d::capi::guard(__func__, [&] {
         o3d::capi::require(out_passed, "out_passed");
         const auto core = to_core(o3d::capi::require(checker, "checker"), 1);

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/geometry/mesh_cleanup.h"
 #include "o3d/geometry/mesh_clusters.h"
@@ -24,67 +25,28 @@ const TriangleMesh& mesh_of(const o3d_trianglemesh_t* m, const char* name = "mes
     return require(m, name)->mesh;
 }
 
-/// @brief A float64 array of the mesh seen as rows of `cols` doubles.
-struct DoubleArray {
-    double* data;
-    size_t rows;
-    size_t cols;
-};
-
-template <typename Vec>
-DoubleArray as_array(std::vector<Vec>& v) {
-    return {v.empty() ? nullptr : v[0].data(), v.size(), static_cast<size_t>(Vec::RowsAtCompileTime)};
-}
-
-DoubleArray double_array(TriangleMesh& m, int32_t which) {
+o3d::capi::ArraySlot<double> mesh_slot(o3d_trianglemesh_t* h, int32_t which) {
+    TriangleMesh& m = mesh_of(h);
     switch (which) {
-        case O3D_MESH_VERTICES: return as_array(m.vertices);
-        case O3D_MESH_VERTEX_NORMALS: return as_array(m.vertex_normals);
-        case O3D_MESH_VERTEX_COLORS: return as_array(m.vertex_colors);
-        case O3D_MESH_TRIANGLE_NORMALS: return as_array(m.triangle_normals);
-        case O3D_MESH_TRIANGLE_UVS: return as_array(m.triangle_uvs);
+        case O3D_MESH_VERTICES: return o3d::capi::eigen_slot(m.vertices, m.has_vertices());
+        case O3D_MESH_VERTEX_NORMALS: return o3d::capi::eigen_slot(m.vertex_normals, m.has_vertex_normals());
+        case O3D_MESH_VERTEX_COLORS: return o3d::capi::eigen_slot(m.vertex_colors, m.has_vertex_colors());
+        case O3D_MESH_TRIANGLE_NORMALS: return o3d::capi::eigen_slot(m.triangle_normals, m.has_triangle_normals());
+        case O3D_MESH_TRIANGLE_UVS: return o3d::capi::eigen_slot(m.triangle_uvs, m.has_triangle_uvs());
         default:
-            throw o3d::InvalidArgument("which " + std::to_string(which) +
-                                       " is not a float64 mesh array (O3D_MESH_VERTICES .. O3D_MESH_TRIANGLE_UVS)");
+            o3d::capi::bad_which(which, "a float64 mesh array (O3D_MESH_VERTICES .. O3D_MESH_TRIANGLE_UVS)");
     }
 }
 
-DoubleArray double_array(const TriangleMesh& m, int32_t which) { return double_array(const_cast<TriangleMesh&>(m), which); }
-
-template <typename Vec>
-void set_rows(std::vector<Vec>& dst, const double* data, size_t rows) {
-    constexpr int cols = Vec::RowsAtCompileTime;
-    std::vector<Vec> out(rows);
-    for (size_t i = 0; i < rows; ++i)
-        for (int k = 0; k < cols; ++k) out[i](k) = data[cols * i + k];
-    dst = std::move(out);
-}
-
-struct IntArray {
-    int32_t* data;
-    size_t rows;
-    size_t cols;
-};
-
-IntArray int_array(TriangleMesh& m, int32_t which) {
+o3d::capi::ArraySlot<int32_t> mesh_index_slot(o3d_trianglemesh_t* h, int32_t which) {
+    TriangleMesh& m = mesh_of(h);
     switch (which) {
-        case O3D_MESH_TRIANGLES:
-            return {m.triangles.empty() ? nullptr : m.triangles[0].data(), m.triangles.size(), 3};
+        case O3D_MESH_TRIANGLES: return o3d::capi::eigen_slot(m.triangles, m.has_triangles());
         case O3D_MESH_TRIANGLE_MATERIAL_IDS:
-            return {m.triangle_material_ids.empty() ? nullptr : m.triangle_material_ids.data(),
-                    m.triangle_material_ids.size(), 1};
+            return o3d::capi::flat_slot(m.triangle_material_ids, 1, m.has_triangle_material_ids());
         default:
-            throw o3d::InvalidArgument("which " + std::to_string(which) +
-                                       " is not an int32 mesh array (O3D_MESH_TRIANGLES, O3D_MESH_TRIANGLE_MATERIAL_IDS)");
+            o3d::capi::bad_which(which, "an int32 mesh array (O3D_MESH_TRIANGLES, O3D_MESH_TRIANGLE_MATERIAL_IDS)");
     }
-}
-
-IntArray int_array(const TriangleMesh& m, int32_t which) { return int_array(const_cast<TriangleMesh&>(m), which); }
-
-void check_input(const void* data, size_t rows, size_t cols, const char* name) {
-    if (rows > 0 && !data) throw o3d::InvalidArgument(std::string(name) + " is NULL but rows = " + std::to_string(rows));
-    if (rows > SIZE_MAX / (cols * sizeof(double)))
-        throw o3d::InvalidArgument(std::string(name) + ": rows = " + std::to_string(rows) + " is too large");
 }
 
 void write3(double* out, const char* name, const Eigen::Vector3d& v) {
@@ -118,6 +80,10 @@ int32_t flag(bool b) { return b ? 1 : 0; }
 
 extern "C" {
 
+O3D_CAPI_ARRAYS_F64(trianglemesh, o3d_trianglemesh_t, mesh_slot)
+O3D_CAPI_HAS_ARRAY(trianglemesh, o3d_trianglemesh_t, mesh_slot, mesh_index_slot)
+O3D_CAPI_INDEX_ARRAYS(trianglemesh, o3d_trianglemesh_t, mesh_index_slot)
+
 /* ---- Container ---- */
 
 O3D_API o3d_status o3d_trianglemesh_create(o3d_trianglemesh_t** out) {
@@ -137,124 +103,21 @@ O3D_API o3d_status o3d_trianglemesh_clear(o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] { mesh_of(mesh).clear(); });
 }
 
-O3D_API o3d_status o3d_trianglemesh_num_vertices(const o3d_trianglemesh_t* mesh, size_t* out_n) {
+O3D_API o3d_status o3d_trianglemesh_num_vertices(size_t* out_n, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out_n, "out_n") = m.vertices.size();
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_num_triangles(const o3d_trianglemesh_t* mesh, size_t* out_n) {
+O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out_n, "out_n") = m.triangles.size();
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_has_array(const o3d_trianglemesh_t* mesh, int32_t which, int32_t* out) {
-    return guard(__func__, [&] {
-        const TriangleMesh& m = mesh_of(mesh);
-        require(out, "out");
-        switch (which) {
-            case O3D_MESH_VERTICES: *out = flag(m.has_vertices()); break;
-            case O3D_MESH_VERTEX_NORMALS: *out = flag(m.has_vertex_normals()); break;
-            case O3D_MESH_VERTEX_COLORS: *out = flag(m.has_vertex_colors()); break;
-            case O3D_MESH_TRIANGLE_NORMALS: *out = flag(m.has_triangle_normals()); break;
-            case O3D_MESH_TRIANGLE_UVS: *out = flag(m.has_triangle_uvs()); break;
-            case O3D_MESH_TRIANGLES: *out = flag(m.has_triangles()); break;
-            case O3D_MESH_TRIANGLE_MATERIAL_IDS: *out = flag(m.has_triangle_material_ids()); break;
-            default: throw o3d::InvalidArgument("which " + std::to_string(which) + " is not an O3D_MESH_* array");
-        }
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t which, const double* data,
-                                              size_t rows) {
-    return guard(__func__, [&] {
-        TriangleMesh& m = mesh_of(mesh);
-        const DoubleArray target = double_array(m, which);  // validates `which`
-        check_input(data, rows, target.cols, "data");
-        switch (which) {
-            case O3D_MESH_VERTICES: set_rows(m.vertices, data, rows); break;
-            case O3D_MESH_VERTEX_NORMALS: set_rows(m.vertex_normals, data, rows); break;
-            case O3D_MESH_VERTEX_COLORS: set_rows(m.vertex_colors, data, rows); break;
-            case O3D_MESH_TRIANGLE_NORMALS: set_rows(m.triangle_normals, data, rows); break;
-            default: set_rows(m.triangle_uvs, data, rows); break;
-        }
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_get_array(const o3d_trianglemesh_t* mesh, int32_t which, double* out,
-                                              size_t capacity, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const DoubleArray a = double_array(mesh_of(mesh), which);
-        require(out_rows, "out_rows");
-        o3d::capi::copy_out<double>(a.data, a.rows, out, capacity, out_rows, a.cols);
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_array_view(const o3d_trianglemesh_t* mesh, int32_t which,
-                                               const double** out_data, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const DoubleArray a = double_array(mesh_of(mesh), which);
-        *require(out_data, "out_data") = a.data;
-        *require(out_rows, "out_rows") = a.rows;
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_array_mutable_view(o3d_trianglemesh_t* mesh, int32_t which, double** out_data,
-                                                       size_t* out_rows) {
-    return guard(__func__, [&] {
-        const DoubleArray a = double_array(mesh_of(mesh), which);
-        *require(out_data, "out_data") = a.data;
-        *require(out_rows, "out_rows") = a.rows;
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, int32_t which, const int32_t* data,
-                                                    size_t rows) {
-    return guard(__func__, [&] {
-        TriangleMesh& m = mesh_of(mesh);
-        const IntArray target = int_array(m, which);  // validates `which`
-        check_input(data, rows, target.cols, "data");
-        if (which == O3D_MESH_TRIANGLES) {
-            std::vector<Eigen::Vector3i> tris(rows);
-            for (size_t i = 0; i < rows; ++i) tris[i] = Eigen::Vector3i(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
-            m.triangles = std::move(tris);
-        } else {
-            m.triangle_material_ids.assign(data, data + rows);
-        }
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_get_index_array(const o3d_trianglemesh_t* mesh, int32_t which, int32_t* out,
-                                                    size_t capacity, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const IntArray a = int_array(mesh_of(mesh), which);
-        require(out_rows, "out_rows");
-        o3d::capi::copy_out<int32_t>(a.data, a.rows, out, capacity, out_rows, a.cols);
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_index_array_view(const o3d_trianglemesh_t* mesh, int32_t which,
-                                                     const int32_t** out_data, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const IntArray a = int_array(mesh_of(mesh), which);
-        *require(out_data, "out_data") = a.data;
-        *require(out_rows, "out_rows") = a.rows;
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_index_array_mutable_view(o3d_trianglemesh_t* mesh, int32_t which,
-                                                             int32_t** out_data, size_t* out_rows) {
-    return guard(__func__, [&] {
-        const IntArray a = int_array(mesh_of(mesh), which);
-        *require(out_data, "out_data") = a.data;
-        *require(out_rows, "out_rows") = a.rows;
-    });
-}
-
-O3D_API o3d_status o3d_trianglemesh_texture_count(const o3d_trianglemesh_t* mesh, size_t* out_n) {
+O3D_API o3d_status o3d_trianglemesh_texture_count(size_t* out_n, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out_n, "out_n") = m.textures.size();
@@ -355,29 +218,29 @@ O3D_API o3d_status o3d_trianglemesh_scale(o3d_trianglemesh_t* mesh, double scale
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_min_bound(const o3d_trianglemesh_t* mesh, double out[3]) {
+O3D_API o3d_status o3d_trianglemesh_get_min_bound(double out[3], const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         write3(out, "out", o3d::geometry::min_bound(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_max_bound(const o3d_trianglemesh_t* mesh, double out[3]) {
+O3D_API o3d_status o3d_trianglemesh_get_max_bound(double out[3], const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         write3(out, "out", o3d::geometry::max_bound(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_center(const o3d_trianglemesh_t* mesh, double out[3]) {
+O3D_API o3d_status o3d_trianglemesh_get_center(double out[3], const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         write3(out, "out", o3d::geometry::center(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_axis_aligned_bounding_box(const o3d_trianglemesh_t* mesh,
-                                                                  double out_min[3], double out_max[3]) {
+O3D_API o3d_status o3d_trianglemesh_get_axis_aligned_bounding_box(double out_min[3], double out_max[3],
+                                                                  const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         require(out_min, "out_min");
@@ -415,68 +278,68 @@ O3D_API o3d_status o3d_trianglemesh_merge_close_vertices(o3d_trianglemesh_t* mes
 
 /* ---- Queries ---- */
 
-O3D_API o3d_status o3d_trianglemesh_get_surface_area(const o3d_trianglemesh_t* mesh, double* out) {
+O3D_API o3d_status o3d_trianglemesh_get_surface_area(double* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = o3d::geometry::surface_area(m);
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_get_volume(const o3d_trianglemesh_t* mesh, double* out) {
+O3D_API o3d_status o3d_trianglemesh_get_volume(double* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = o3d::geometry::volume(m);
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_is_watertight(const o3d_trianglemesh_t* mesh, int32_t* out) {
+O3D_API o3d_status o3d_trianglemesh_is_watertight(int32_t* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = flag(o3d::geometry::is_watertight(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_is_edge_manifold(const o3d_trianglemesh_t* mesh, int32_t allow_boundary_edges,
-                                                     int32_t* out) {
+O3D_API o3d_status o3d_trianglemesh_is_edge_manifold(int32_t* out, const o3d_trianglemesh_t* mesh,
+                                                     int32_t allow_boundary_edges) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = flag(o3d::geometry::is_edge_manifold(m, allow_boundary_edges != 0));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_is_vertex_manifold(const o3d_trianglemesh_t* mesh, int32_t* out) {
+O3D_API o3d_status o3d_trianglemesh_is_vertex_manifold(int32_t* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = flag(o3d::geometry::is_vertex_manifold(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_is_self_intersecting(const o3d_trianglemesh_t* mesh, int32_t* out) {
+O3D_API o3d_status o3d_trianglemesh_is_self_intersecting(int32_t* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = flag(o3d::geometry::is_self_intersecting(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_is_orientable(const o3d_trianglemesh_t* mesh, int32_t* out) {
+O3D_API o3d_status o3d_trianglemesh_is_orientable(int32_t* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = flag(o3d::geometry::is_orientable(m));
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_euler_poincare_characteristic(const o3d_trianglemesh_t* mesh, int64_t* out) {
+O3D_API o3d_status o3d_trianglemesh_euler_poincare_characteristic(int64_t* out, const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         *require(out, "out") = o3d::geometry::euler_poincare_characteristic(m);
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(const o3d_trianglemesh_t* mesh,
-                                                                int32_t* out_triangle_clusters,
+O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(int32_t* out_triangle_clusters,
                                                                 int32_t* out_cluster_n_triangles,
                                                                 double* out_cluster_area, size_t capacity,
-                                                                size_t* out_num_triangles, size_t* out_num_clusters) {
+                                                                size_t* out_num_triangles, size_t* out_num_clusters,
+                                                                const o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
         const TriangleMesh& m = mesh_of(mesh);
         require(out_num_triangles, "out_num_triangles");

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "array_family.h"
 #include "internal.h"
 #include "o3d/geometry/voxel_grid_ops.h"
 #include "o3d/voxelgrid.h"
@@ -31,6 +32,18 @@ void give(o3d_voxelgrid_t** out, VoxelGrid grid) {
     auto handle = std::make_unique<o3d_voxelgrid>();
     handle->grid = std::move(grid);
     *out = handle.release();
+}
+
+/// @brief Copy one field of every voxel (sorted by grid index) out, with the copy-out convention.
+template <typename T, typename Field>
+void copy_voxels(const VoxelGrid& g, T* out, size_t capacity, size_t* out_rows, Field field) {
+    *require(out_rows, "out_rows") = g.voxels.size();
+    if (!out) return;
+    if (capacity < g.voxels.size())
+        throw o3d::BufferTooSmall("buffer holds " + std::to_string(capacity) + " voxels but " +
+                                  std::to_string(g.voxels.size()) + " are needed");
+    for (size_t i = 0; i < g.voxels.size(); ++i)
+        for (int k = 0; k < 3; ++k) out[3 * i + k] = static_cast<T>(field(g.voxels[i])(k));
 }
 
 }  // namespace
@@ -67,11 +80,11 @@ O3D_API o3d_status o3d_voxelgrid_create_from_triangle_mesh(o3d_voxelgrid_t** out
 
 O3D_API void o3d_voxelgrid_destroy(o3d_voxelgrid_t* grid) { delete grid; }
 
-O3D_API o3d_status o3d_voxelgrid_get_voxel_size(const o3d_voxelgrid_t* grid, double* out) {
+O3D_API o3d_status o3d_voxelgrid_get_voxel_size(double* out, const o3d_voxelgrid_t* grid) {
     return guard(__func__, [&] { *require(out, "out") = grid_of(grid).voxel_size; });
 }
 
-O3D_API o3d_status o3d_voxelgrid_get_origin(const o3d_voxelgrid_t* grid, double out[3]) {
+O3D_API o3d_status o3d_voxelgrid_get_origin(double out[3], const o3d_voxelgrid_t* grid) {
     return guard(__func__, [&] {
         const VoxelGrid& g = grid_of(grid);
         require(out, "out");
@@ -79,30 +92,30 @@ O3D_API o3d_status o3d_voxelgrid_get_origin(const o3d_voxelgrid_t* grid, double 
     });
 }
 
-O3D_API o3d_status o3d_voxelgrid_num_voxels(const o3d_voxelgrid_t* grid, size_t* out_n) {
+O3D_API o3d_status o3d_voxelgrid_num_voxels(size_t* out_n, const o3d_voxelgrid_t* grid) {
     return guard(__func__, [&] { *require(out_n, "out_n") = grid_of(grid).voxels.size(); });
 }
 
-O3D_API o3d_status o3d_voxelgrid_get_voxels(const o3d_voxelgrid_t* grid, int32_t* out_grid_index, double* out_colors,
-                                            size_t capacity, size_t* out_n) {
+O3D_API o3d_status o3d_voxelgrid_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_voxelgrid_t* grid,
+                                           int32_t which) {
     return guard(__func__, [&] {
         const VoxelGrid& g = grid_of(grid);
-        require(out_n, "out_n");
-        const size_t n = g.voxels.size();
-        *out_n = n;
-        if ((out_grid_index || out_colors) && capacity < n)
-            throw o3d::BufferTooSmall("buffer holds " + std::to_string(capacity) + " voxels but " + std::to_string(n) +
-                                      " are needed");
-        for (size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) {
-                if (out_grid_index) out_grid_index[3 * i + k] = g.voxels[i].grid_index(k);
-                if (out_colors) out_colors[3 * i + k] = g.voxels[i].color(k);
-            }
-        }
+        if (which != O3D_VOXELGRID_COLORS) o3d::capi::bad_which(which, "a float64 voxel-grid array (O3D_VOXELGRID_COLORS)");
+        copy_voxels(g, out, capacity, out_rows, [](const auto& v) { return v.color; });
     });
 }
 
-O3D_API o3d_status o3d_voxelgrid_get_voxel(const o3d_voxelgrid_t* grid, const double point[3], int32_t out_index[3]) {
+O3D_API o3d_status o3d_voxelgrid_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
+                                                 const o3d_voxelgrid_t* grid, int32_t which) {
+    return guard(__func__, [&] {
+        const VoxelGrid& g = grid_of(grid);
+        if (which != O3D_VOXELGRID_GRID_INDEX)
+            o3d::capi::bad_which(which, "an int32 voxel-grid array (O3D_VOXELGRID_GRID_INDEX)");
+        copy_voxels(g, out, capacity, out_rows, [](const auto& v) { return v.grid_index; });
+    });
+}
+
+O3D_API o3d_status o3d_voxelgrid_get_voxel(int32_t out_index[3], const o3d_voxelgrid_t* grid, const double point[3]) {
     return guard(__func__, [&] {
         const VoxelGrid& g = grid_of(grid);
         require(out_index, "out_index");
@@ -111,13 +124,16 @@ O3D_API o3d_status o3d_voxelgrid_get_voxel(const o3d_voxelgrid_t* grid, const do
     });
 }
 
-O3D_API o3d_status o3d_voxelgrid_check_if_included(const o3d_voxelgrid_t* grid, const double* xyz, size_t n,
-                                                   int32_t* out_included) {
+O3D_API o3d_status o3d_voxelgrid_check_if_included(int32_t* out_included, size_t capacity, size_t* out_n,
+                                                   const o3d_voxelgrid_t* grid, const double* xyz, size_t n) {
     return guard(__func__, [&] {
         const VoxelGrid& g = grid_of(grid);
-        if (n == 0) return;
-        require(xyz, "xyz");
-        require(out_included, "out_included");
+        *require(out_n, "out_n") = n;
+        if (n > 0) require(xyz, "xyz");
+        if (!out_included || n == 0) return;
+        if (capacity < n)
+            throw o3d::BufferTooSmall("buffer holds " + std::to_string(capacity) + " flags but " + std::to_string(n) +
+                                      " are needed");
         if (n > SIZE_MAX / (3 * sizeof(double))) throw o3d::InvalidArgument("n is too large");
         std::vector<Eigen::Vector3d> points(n);
         for (size_t i = 0; i < n; ++i) points[i] = Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     printf("o3d %s\n", o3d_version());
 
     if ((s = o3d_io_read_point_cloud(&cloud, argv[1], NULL, NULL)) != O3D_OK) return report("read", s);
-    if ((s = o3d_pointcloud_size(cloud, &n_in)) != O3D_OK) {
+    if ((s = o3d_pointcloud_size(&n_in, cloud)) != O3D_OK) {
         report("size", s);
         goto done;
     }
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
         report("voxel_down_sample", s);
         goto done;
     }
-    if ((s = o3d_pointcloud_size(down, &n_out)) != O3D_OK) {
+    if ((s = o3d_pointcloud_size(&n_out, down)) != O3D_OK) {
         report("size", s);
         goto done;
     }
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         report("estimate_normals", s);
         goto done;
     }
-    if ((s = o3d_pointcloud_has_normals(down, &has_normals)) != O3D_OK) {
+    if ((s = o3d_pointcloud_has_array(&has_normals, down, O3D_POINTCLOUD_NORMALS)) != O3D_OK) {
         report("has_normals", s);
         goto done;
     }

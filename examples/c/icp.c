@@ -18,10 +18,10 @@ static o3d_status print_result(const char* title, const o3d_registration_result_
     size_t pairs = 0;
     o3d_status s;
     int i;
-    if ((s = o3d_registration_result_get_fitness(r, &fitness)) != O3D_OK) return s;
-    if ((s = o3d_registration_result_get_inlier_rmse(r, &rmse)) != O3D_OK) return s;
-    if ((s = o3d_registration_result_get_correspondence_set(r, NULL, 0, &pairs)) != O3D_OK) return s;
-    if ((s = o3d_registration_result_get_transformation(r, t)) != O3D_OK) return s;
+    if ((s = o3d_registration_result_get_fitness(&fitness, r)) != O3D_OK) return s;
+    if ((s = o3d_registration_result_get_inlier_rmse(&rmse, r)) != O3D_OK) return s;
+    if ((s = o3d_registration_result_get_correspondence_set(NULL, 0, &pairs, r)) != O3D_OK) return s;
+    if ((s = o3d_registration_result_get_transformation(t, r)) != O3D_OK) return s;
     printf("%s: fitness=%.6f inlier_rmse=%.6f correspondences=%zu\n", title, fitness, rmse, pairs);
     for (i = 0; i < 4; ++i) printf("  [% .6f % .6f % .6f % .6f]\n", t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3]);
     return O3D_OK;

@@ -28,7 +28,7 @@ static o3d_pointcloud_t* cube_cloud(void) {
     memcpy(xyz + 33, tail, sizeof tail);
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 14), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 14), O3D_OK);
     return pc;
 }
 
@@ -38,11 +38,11 @@ static void test_convex_hull_of_cube(void** state) {
     o3d_trianglemesh_t* hull = NULL;
     int32_t idx[14];
     size_t n = 0, nv = 0, nt = 0;
-    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, idx, 14, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, idx, 14, &n, pc, 0), O3D_OK);
     assert_int_equal(n, 8);
-    assert_int_equal(o3d_trianglemesh_num_vertices(hull, &nv), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_vertices(&nv, hull), O3D_OK);
     assert_int_equal(nv, 8);
-    assert_int_equal(o3d_trianglemesh_num_triangles(hull, &nt), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&nt, hull), O3D_OK);
     assert_int_equal(nt, 12);
     int seen = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -51,26 +51,26 @@ static void test_convex_hull_of_cube(void** state) {
     }
     assert_int_equal(seen, 0xff);
     double volume = 0.0, area = 0.0;
-    assert_int_equal(o3d_trianglemesh_get_volume(hull, &volume), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_volume(&volume, hull), O3D_OK);
     assert_true(fabs(volume - 1.0) < 1e-12);
-    assert_int_equal(o3d_trianglemesh_get_surface_area(hull, &area), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_surface_area(&area, hull), O3D_OK);
     assert_true(fabs(area - 6.0) < 1e-12);
     o3d_trianglemesh_destroy(hull);
 
     /* Indices optional; a small buffer fails and leaves no mesh. */
     hull = NULL;
-    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, pc, 1, NULL, 0, NULL), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, NULL, pc, 1), O3D_OK);
     assert_non_null(hull);
     o3d_trianglemesh_destroy(hull);
     hull = (o3d_trianglemesh_t*)1;
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, idx, 2, &n), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, idx, 2, &n, pc, 0), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_null(hull);
     assert_int_equal(n, 8);
 
     /* The same through a mesh's vertices. */
     o3d_trianglemesh_t* m = NULL;
-    o3d_pointcloud_compute_convex_hull(&m, pc, 0, NULL, 0, NULL);
-    assert_int_equal(o3d_trianglemesh_compute_convex_hull(&hull, m, 0, idx, 14, &n), O3D_OK);
+    o3d_pointcloud_compute_convex_hull(&m, NULL, 0, NULL, pc, 0);
+    assert_int_equal(o3d_trianglemesh_compute_convex_hull(&hull, idx, 14, &n, m, 0), O3D_OK);
     assert_int_equal(n, 8);
     o3d_trianglemesh_destroy(hull);
     o3d_trianglemesh_destroy(m);
@@ -84,27 +84,27 @@ static void test_hull_errors(void** state) {
     size_t n = 0;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
     const double tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-    assert_int_equal(o3d_pointcloud_set_points(pc, tri, 3), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, NULL, 0, &n), INV); /* < 4 points */
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, tri, 3), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, pc, 0), INV); /* < 4 points */
     const double square[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0.5, 0.5, 0};
-    assert_int_equal(o3d_pointcloud_set_points(pc, square, 5), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, NULL, 0, &n), INV); /* coplanar */
-    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, pc, 1, NULL, 0, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, square, 5), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, pc, 0), INV); /* coplanar */
+    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, pc, 1), O3D_OK);
     o3d_trianglemesh_destroy(hull);
     const double with_nan[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, NAN};
-    assert_int_equal(o3d_pointcloud_set_points(pc, with_nan, 4), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, pc, 1, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(NULL, pc, 0, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_trianglemesh_compute_convex_hull(&hull, NULL, 0, NULL, 0, &n), INV);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, with_nan, 4), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, pc, 1), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(NULL, NULL, 0, &n, pc, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, NULL, 0), INV);
+    O3D_ASSERT_FAILS(o3d_trianglemesh_compute_convex_hull(&hull, NULL, 0, &n, NULL, 0), INV);
     const double cam[3] = {0, 0, 5};
-    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, pc, NULL, 1.0, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, cam, 1.0, NULL, 0, &n), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, pc, NULL, 1.0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, NULL, cam, 1.0), INV);
     o3d_pointcloud_destroy(pc);
     pc = cube_cloud();
-    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, pc, cam, 0.0, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, pc, cam, -2.0, NULL, 0, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, pc, cam, NAN, NULL, 0, &n), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, pc, cam, 0.0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, pc, cam, -2.0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, pc, cam, NAN), INV);
     o3d_pointcloud_destroy(pc);
 }
 
@@ -121,12 +121,12 @@ static void test_hidden_point_removal_of_sphere(void** state) {
     }
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, N), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, N), O3D_OK);
     const double cam[3] = {0, 0, 100};
     o3d_trianglemesh_t* visible = NULL;
     int32_t* idx = malloc(sizeof(int32_t) * N);
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_hidden_point_removal(&visible, pc, cam, 1e5, idx, N, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_hidden_point_removal(&visible, idx, N, &n, pc, cam, 1e5), O3D_OK);
     assert_true(n > 0.45 * N && n < 0.56 * N);
     for (size_t i = 0; i < n; ++i) assert_true(xyz[3 * idx[i] + 2] > -0.1); /* none from the far side */
     o3d_trianglemesh_destroy(visible);
@@ -153,7 +153,7 @@ static void test_obb_of_rotated_box(void** state) {
     assert_true(fabs(box.center[0] - 1) < 1e-9 && fabs(box.center[1] - 2) < 1e-9 && fabs(box.center[2] - 3) < 1e-9);
     assert_true(fabs(fabs(box.R[0]) - c) < 1e-9 && fabs(fabs(box.R[3]) - s) < 1e-9); /* column 0 = rotated x */
     double corners[24];
-    assert_int_equal(o3d_obb_get_box_points(&box, corners), O3D_OK);
+    assert_int_equal(o3d_obb_get_box_points(corners, &box), O3D_OK);
     for (int i = 0; i < 8; ++i) { /* each corner is one of the input corners */
         int found = 0;
         for (int j = 0; j < 8; ++j)
@@ -163,40 +163,40 @@ static void test_obb_of_rotated_box(void** state) {
     }
     int32_t inside[9];
     size_t n = 0;
-    assert_int_equal(o3d_obb_get_point_indices_within(&box, xyz, 9, inside, 9, &n), O3D_OK);
+    assert_int_equal(o3d_obb_get_point_indices_within(inside, 9, &n, &box, xyz, 9), O3D_OK);
     assert_int_equal(n, 9);
     const double outside[3] = {1, 2, 4};
-    assert_int_equal(o3d_obb_get_point_indices_within(&box, outside, 1, inside, 9, &n), O3D_OK);
+    assert_int_equal(o3d_obb_get_point_indices_within(inside, 9, &n, &box, outside, 1), O3D_OK);
     assert_int_equal(n, 0);
 
     /* Crop: the centre point and its neighbours, or the rest when inverted. */
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
     const double pts[9] = {1, 2, 3, 1, 2, 3.4, 1, 2, 3.6};
-    assert_int_equal(o3d_pointcloud_set_points(pc, pts, 3), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, pts, 3), O3D_OK);
     o3d_pointcloud_t* cropped = NULL;
     assert_int_equal(o3d_pointcloud_crop_obb(&cropped, pc, &box, 0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(cropped, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, cropped), O3D_OK);
     assert_int_equal(n, 2);
     o3d_pointcloud_destroy(cropped);
     assert_int_equal(o3d_pointcloud_crop_obb(&cropped, pc, &box, 1), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(cropped, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, cropped), O3D_OK);
     assert_int_equal(n, 1);
     o3d_pointcloud_destroy(cropped);
 
     /* Box of a cloud and of a mesh's vertices agree with the box of the raw points. */
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 9), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 9), O3D_OK);
     o3d_obb_t again;
-    assert_int_equal(o3d_pointcloud_get_oriented_bounding_box(pc, 0, &again), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_oriented_bounding_box(&again, pc, 0), O3D_OK);
     assert_memory_equal(&again, &box, sizeof box);
     o3d_trianglemesh_t* hull = NULL;
-    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, NULL, 0, NULL), O3D_OK);
-    assert_int_equal(o3d_trianglemesh_get_oriented_bounding_box(hull, 0, &again), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, NULL, pc, 0), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_oriented_bounding_box(&again, hull, 0), O3D_OK);
     assert_true(fabs(again.extent[0] * again.extent[1] * again.extent[2] - 8.0) < 1e-9);
     o3d_trianglemesh_t* mesh_cropped = NULL;
     assert_int_equal(o3d_trianglemesh_crop_obb(&mesh_cropped, hull, &box), O3D_OK);
     size_t nt = 0;
-    assert_int_equal(o3d_trianglemesh_num_triangles(mesh_cropped, &nt), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&nt, mesh_cropped), O3D_OK);
     assert_int_equal(nt, 12); /* the whole hull is inside its own box */
     o3d_trianglemesh_destroy(mesh_cropped);
     o3d_trianglemesh_destroy(hull);
@@ -209,14 +209,14 @@ static void test_obb_from_aabb_and_errors(void** state) {
     const double lo[3] = {-1, -2, -3}, hi[3] = {1, 2, 3};
     assert_int_equal(o3d_obb_create_from_axis_aligned_bounding_box(&box, lo, hi), O3D_OK);
     double corners[24];
-    assert_int_equal(o3d_obb_get_box_points(&box, corners), O3D_OK);
+    assert_int_equal(o3d_obb_get_box_points(corners, &box), O3D_OK);
     /* Open3D's order: ---, +--, -+-, --+, +++, -++, +-+, ++- */
     const double expected[24] = {-1, -2, -3, 1, -2, -3, -1, 2, -3, -1, -2, 3,
                                  1,  2,  3,  -1, 2, 3,  1,  -2, 3, 1,  2,  -3};
     for (int i = 0; i < 24; ++i) assert_true(corners[i] == expected[i]);
     O3D_ASSERT_FAILS(o3d_obb_create_from_axis_aligned_bounding_box(&box, hi, lo), INV);
     O3D_ASSERT_FAILS(o3d_obb_create_from_axis_aligned_bounding_box(NULL, lo, hi), INV);
-    O3D_ASSERT_FAILS(o3d_obb_get_box_points(NULL, corners), INV);
+    O3D_ASSERT_FAILS(o3d_obb_get_box_points(corners, NULL), INV);
     O3D_ASSERT_FAILS(o3d_obb_create_from_points(&box, NULL, 5, 0), INV);
     const double few[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     O3D_ASSERT_FAILS(o3d_obb_create_from_points(&box, few, 3, 1), INV);
@@ -229,17 +229,17 @@ static void test_obb_from_aabb_and_errors(void** state) {
     o3d_pointcloud_t* pc = NULL;
     o3d_pointcloud_t* out = (o3d_pointcloud_t*)1;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, few, 3), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, few, 3), O3D_OK);
     O3D_ASSERT_FAILS(o3d_pointcloud_crop_obb(&out, pc, &box, 0), INV);
     assert_null(out);
     assert_int_equal(o3d_obb_create_from_axis_aligned_bounding_box(&box, lo, hi), O3D_OK);
     box.R[0] = 3.0;
     size_t n = 0;
-    O3D_ASSERT_FAILS(o3d_obb_get_point_indices_within(&box, few, 3, NULL, 0, &n), INV);
+    O3D_ASSERT_FAILS(o3d_obb_get_point_indices_within(NULL, 0, &n, &box, few, 3), INV);
     box.R[0] = NAN;
     O3D_ASSERT_FAILS(o3d_pointcloud_crop_obb(&out, pc, &box, 0), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_crop_obb(&out, pc, NULL, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_oriented_bounding_box(NULL, 0, &box), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_oriented_bounding_box(&box, NULL, 0), INV);
     O3D_ASSERT_FAILS(o3d_trianglemesh_crop_obb(NULL, NULL, &box), INV);
     o3d_pointcloud_destroy(pc);
 }
@@ -252,29 +252,29 @@ static void test_cloud_bin_0_reference(void** state) {
     assert_int_equal(o3d_io_read_point_cloud(&pc, path, NULL, NULL), O3D_OK);
     o3d_trianglemesh_t* hull = NULL;
     size_t n = 0, nt = 0;
-    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, pc, 0, NULL, 0, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_convex_hull(&hull, NULL, 0, &n, pc, 0), O3D_OK);
     assert_int_equal(n, 85);
-    assert_int_equal(o3d_trianglemesh_num_triangles(hull, &nt), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&nt, hull), O3D_OK);
     assert_int_equal(nt, 166);
     double volume = 0.0;
-    assert_int_equal(o3d_trianglemesh_get_volume(hull, &volume), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_volume(&volume, hull), O3D_OK);
     assert_true(fabs(volume - 2.30335298548) < 1e-8);
     o3d_trianglemesh_destroy(hull);
 
     o3d_obb_t box;
-    assert_int_equal(o3d_pointcloud_get_oriented_bounding_box(pc, 0, &box), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_oriented_bounding_box(&box, pc, 0), O3D_OK);
     assert_true(fabs(box.extent[0] * box.extent[1] * box.extent[2] - 6.74249408362) < 1e-8);
     assert_true(fabs(box.center[0] - 2.15397555865) < 1e-9 && fabs(box.center[1] - 0.979776182279) < 1e-9 &&
                 fabs(box.center[2] + 1.73828953775) < 1e-9);
 
     const double cam[3] = {0, 0, 5};
-    assert_int_equal(o3d_pointcloud_hidden_point_removal(&hull, pc, cam, 500.0, NULL, 0, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_hidden_point_removal(&hull, NULL, 0, &n, pc, cam, 500.0), O3D_OK);
     assert_int_equal(n, 1318);
     o3d_trianglemesh_destroy(hull);
 
     assert_int_equal(o3d_pointcloud_estimate_covariances(pc, NULL), O3D_OK); /* KNN 30 */
     const double* view = NULL;
-    assert_int_equal(o3d_pointcloud_covariances_view(pc, &view, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(n, 3903);
     const double cov0[9] = {0.00107995231629,  0.000934985542567, -0.000514799600145,
                             0.000934985542567, 0.00424541377841,  -0.00091369316711,
@@ -290,9 +290,9 @@ static void test_covariances(void** state) {
     /* A 5 x 5 grid in the plane z = 0. */
     double xyz[75];
     for (int i = 0; i < 25; ++i) xyz[3 * i] = i % 5, xyz[3 * i + 1] = i / 5, xyz[3 * i + 2] = 0;
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 25), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 25), O3D_OK);
     int32_t has = -1;
-    assert_int_equal(o3d_pointcloud_has_covariances(pc, &has), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&has, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(has, 0);
     o3d_search_param_t param;
     assert_int_equal(o3d_search_param_init(&param, sizeof param), O3D_OK);
@@ -300,48 +300,55 @@ static void test_covariances(void** state) {
     param.radius = 1.5;
     param.knn = 9;
     assert_int_equal(o3d_pointcloud_estimate_covariances(pc, &param), O3D_OK);
-    assert_int_equal(o3d_pointcloud_has_covariances(pc, &has), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&has, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(has, 1);
     double cov[25 * 9];
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_get_covariances(pc, cov, 25, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(cov, 25, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(n, 25);
     for (int i = 0; i < 25; ++i) /* zero variance along the plane's normal (z) */
         for (int k = 0; k < 3; ++k) assert_true(cov[9 * i + 6 + k] == 0.0 && cov[9 * i + 3 * k + 2] == 0.0);
     /* The centre's 3x3 neighbourhood: variance 2/3 along x and y, no correlation. */
     assert_true(fabs(cov[9 * 12] - 2.0 / 3.0) < 1e-12 && fabs(cov[9 * 12 + 4] - 2.0 / 3.0) < 1e-12);
     assert_true(fabs(cov[9 * 12 + 1]) < 1e-12);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_covariances(pc, cov, 3, &n), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(cov, 3, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_ERROR_BUFFER_TOO_SMALL);
 
-    /* Set / get round trip (row-major, a non-symmetric matrix too), carried by select_by_index. */
-    double mats[18] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 1, 0, 0, 0, 2, 0, 0, 0, 3};
-    assert_int_equal(o3d_pointcloud_set_covariances(pc, mats, 2), O3D_OK);
-    assert_int_equal(o3d_pointcloud_has_covariances(pc, &has), O3D_OK);
+    /* Covariances are symmetric: an asymmetric matrix is refused and the cloud keeps what it had. */
+    const double asym[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COVARIANCES, asym, 1), O3D_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(o3d_pointcloud_get_array(NULL, 0, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
+    assert_int_equal(n, 25);
+    /* Set / get round trip (row-major), carried by select_by_index. */
+    double mats[18] = {1, 2, 3, 2, 5, 6, 3, 6, 9, 1, 0, 0, 0, 2, 0, 0, 0, 3};
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COVARIANCES, mats, 2), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&has, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(has, 0); /* 2 matrices for 25 points do not count */
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 2), O3D_OK);
-    assert_int_equal(o3d_pointcloud_has_covariances(pc, &has), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 2), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&has, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(has, 1);
-    assert_int_equal(o3d_pointcloud_get_covariances(pc, cov, 2, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(cov, 2, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_memory_equal(cov, mats, sizeof mats);
     const double* view = NULL;
-    O3D_ASSERT_FAILS(o3d_pointcloud_covariances_view(pc, &view, &n), INV); /* not symmetric */
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
+    assert_int_equal(n, 2);
+    assert_memory_equal(view, mats, sizeof mats); /* symmetric: the zero-copy view is the row-major layout */
     const int32_t one = 1;
     o3d_pointcloud_t* picked = NULL;
     assert_int_equal(o3d_pointcloud_select_by_index(&picked, pc, &one, 1, 0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_covariances_view(picked, &view, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, picked, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_int_equal(n, 1);
     assert_memory_equal(view, mats + 9, 9 * sizeof(double));
     /* Rotating by 90 degrees about z swaps the x and y variances. */
     const double rz[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
     assert_int_equal(o3d_pointcloud_rotate(picked, rz, NULL), O3D_OK);
-    assert_int_equal(o3d_pointcloud_covariances_view(picked, &view, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, picked, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
     assert_true(fabs(view[0] - 2) < 1e-12 && fabs(view[4] - 1) < 1e-12 && fabs(view[8] - 3) < 1e-12);
     o3d_pointcloud_destroy(picked);
 
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_covariances(pc, NULL, 2), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_covariances(NULL, mats, 2), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_covariances(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_covariances(pc, cov, 2, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COVARIANCES, NULL, 2), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(NULL, O3D_POINTCLOUD_COVARIANCES, mats, 2), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(NULL, pc, O3D_POINTCLOUD_COVARIANCES), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(cov, 2, NULL, pc, O3D_POINTCLOUD_COVARIANCES), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_estimate_covariances(NULL, NULL), INV);
     param.kind = O3D_SEARCH_RADIUS;
     param.radius = 0.0;
@@ -351,7 +358,7 @@ static void test_covariances(void** state) {
     param.radius = NAN;
     O3D_ASSERT_FAILS(o3d_pointcloud_estimate_covariances(pc, &param), INV);
     xyz[0] = NAN;
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 25), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 25), O3D_OK);
     O3D_ASSERT_FAILS(o3d_pointcloud_estimate_covariances(pc, NULL), INV);
     o3d_pointcloud_destroy(pc);
 }

@@ -61,7 +61,7 @@ static void test_trajectory_handle(void** state) {
     o3d_camera_trajectory_t* t = NULL;
     assert_int_equal(o3d_camera_trajectory_create(&t), O3D_OK);
     size_t n = 99;
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 0);
     const o3d_pinhole_intrinsic_t in = {320, 240, 300.5, 301.25, 159.5, 119.5};
     double e[16], back[16];
@@ -69,19 +69,19 @@ static void test_trajectory_handle(void** state) {
     assert_int_equal(o3d_camera_trajectory_append(t, &in, e), O3D_OK);
     rotation_z(-1.1, 0.0, 0.25, 3.0, e);
     assert_int_equal(o3d_camera_trajectory_append(t, &in, e), O3D_OK);
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 2);
     o3d_pinhole_intrinsic_t got;
-    assert_int_equal(o3d_camera_trajectory_get(t, 1, &got, back), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(&got, back, t, 1), O3D_OK);
     assert_intrinsic_equal(&got, &in);
     assert_memory_equal(back, e, sizeof e);  /* row-major in, row-major out */
-    assert_int_equal(o3d_camera_trajectory_get(t, 0, NULL, NULL), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(NULL, NULL, t, 0), O3D_OK);
 
     /* Errors: range, NULLs, a last row other than (0, 0, 0, 1), NaN. */
-    O3D_ASSERT_FAILS(o3d_camera_trajectory_get(t, 2, &got, back), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_camera_trajectory_get(NULL, 0, &got, back), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_camera_trajectory_size(NULL, &n), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_camera_trajectory_size(t, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_camera_trajectory_get(&got, back, t, 2), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_camera_trajectory_get(&got, back, NULL, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_camera_trajectory_size(&n, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_camera_trajectory_size(NULL, t), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_camera_trajectory_append(NULL, &in, e), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_camera_trajectory_append(t, NULL, e), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_camera_trajectory_append(t, &in, NULL), O3D_ERROR_INVALID_ARGUMENT);
@@ -95,11 +95,11 @@ static void test_trajectory_handle(void** state) {
     o3d_pinhole_intrinsic_t bad = in;
     bad.fx = INFINITY;
     O3D_ASSERT_FAILS(o3d_camera_trajectory_append(t, &bad, e), O3D_ERROR_INVALID_ARGUMENT);
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 2);  /* failed appends add nothing */
 
     assert_int_equal(o3d_camera_trajectory_clear(t), O3D_OK);
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 0);
     O3D_ASSERT_FAILS(o3d_camera_trajectory_clear(NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_camera_trajectory_create(NULL), O3D_ERROR_INVALID_ARGUMENT);
@@ -115,7 +115,7 @@ static void test_read_open3d_files(void** state) {
     (void)state;
     O3D_C_TEST_DATA_OR_SKIP(intrinsic_path, "open3d/camera_primesense.json");
     o3d_pinhole_intrinsic_t in;
-    assert_int_equal(o3d_io_read_pinhole_camera_intrinsic(intrinsic_path, &in), O3D_OK);
+    assert_int_equal(o3d_io_read_pinhole_camera_intrinsic(&in, intrinsic_path), O3D_OK);
     const o3d_pinhole_intrinsic_t ps = {640, 480, 525.0, 525.0, 319.5, 239.5};
     assert_intrinsic_equal(&in, &ps);
 
@@ -123,10 +123,10 @@ static void test_read_open3d_files(void** state) {
     o3d_camera_trajectory_t* t = NULL;
     assert_int_equal(o3d_io_read_pinhole_camera_trajectory(&t, json_path, NULL), O3D_OK);
     size_t n = 0;
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 31);
     double e[16];
-    assert_int_equal(o3d_camera_trajectory_get(t, 1, &in, e), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(&in, e, t, 1), O3D_OK);
     const double e1[16] = {0.9992879577710159,   -0.006715136819757545, 0.0371279462308972, -2.3078035383191513,
                            0.016150876271446853, 0.9654520063147016,    -0.260079935209508, -1.2035828634030123,
                            -0.03409877782995854, 0.2604943961785155,    0.9648730190600698, 1.125458179216736,
@@ -137,9 +137,9 @@ static void test_read_open3d_files(void** state) {
 
     O3D_C_TEST_DATA_OR_SKIP(log_path, "open3d/RGBD/trajectory.log");
     assert_int_equal(o3d_io_read_pinhole_camera_trajectory(&t, log_path, "log"), O3D_OK);
-    assert_int_equal(o3d_camera_trajectory_size(t, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, t), O3D_OK);
     assert_int_equal(n, 5);
-    assert_int_equal(o3d_camera_trajectory_get(t, 4, &in, e), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(&in, e, t, 4), O3D_OK);
     assert_intrinsic_equal(&in, &ps);  /* .log carries no intrinsic: PrimeSense default */
     const double e4[16] = {-0.2589186421085548, 0.0,  -0.9658991338481787,  1.9684600200041038,
                            0.07016430847656363, -0.997358120495347,   -0.018808224211631922, 0.7304114882103011,
@@ -159,16 +159,16 @@ static void test_round_trips(void** state) {
     temp_path(path, sizeof path, "intrinsic.json");
     assert_int_equal(o3d_io_write_pinhole_camera_intrinsic(path, &in), O3D_OK);
     o3d_pinhole_intrinsic_t got;
-    assert_int_equal(o3d_io_read_pinhole_camera_intrinsic(path, &got), O3D_OK);
+    assert_int_equal(o3d_io_read_pinhole_camera_intrinsic(&got, path), O3D_OK);
     assert_intrinsic_equal(&got, &in);
     remove(path);
 
     temp_path(path, sizeof path, "params.json");
     assert_int_equal(o3d_io_write_pinhole_camera_parameters(path, &in, e), O3D_OK);
-    assert_int_equal(o3d_io_read_pinhole_camera_parameters(path, &got, back), O3D_OK);
+    assert_int_equal(o3d_io_read_pinhole_camera_parameters(&got, back, path), O3D_OK);
     assert_intrinsic_equal(&got, &in);
     assert_memory_equal(back, e, sizeof e);
-    assert_int_equal(o3d_io_read_pinhole_camera_parameters(path, NULL, NULL), O3D_OK);
+    assert_int_equal(o3d_io_read_pinhole_camera_parameters(NULL, NULL, path), O3D_OK);
     remove(path);
 
     o3d_camera_trajectory_t* t = NULL;
@@ -181,7 +181,7 @@ static void test_round_trips(void** state) {
     assert_int_equal(o3d_io_write_pinhole_camera_trajectory(path, t, NULL), O3D_OK);
     o3d_camera_trajectory_t* json = NULL;
     assert_int_equal(o3d_io_read_pinhole_camera_trajectory(&json, path, "json"), O3D_OK);
-    assert_int_equal(o3d_camera_trajectory_get(json, 1, &got, back), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(&got, back, json, 1), O3D_OK);
     assert_intrinsic_equal(&got, &in);
     assert_memory_equal(back, e, sizeof e);  /* JSON keeps every bit */
     o3d_camera_trajectory_destroy(json);
@@ -192,9 +192,9 @@ static void test_round_trips(void** state) {
     o3d_camera_trajectory_t* log = NULL;
     assert_int_equal(o3d_io_read_pinhole_camera_trajectory(&log, path, NULL), O3D_OK);
     size_t n = 0;
-    assert_int_equal(o3d_camera_trajectory_size(log, &n), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_size(&n, log), O3D_OK);
     assert_int_equal(n, 2);
-    assert_int_equal(o3d_camera_trajectory_get(log, 1, &got, back), O3D_OK);
+    assert_int_equal(o3d_camera_trajectory_get(&got, back, log, 1), O3D_OK);
     assert_near16(back, e, 1e-14);  /* inverted on write and on read */
     assert_int_equal(got.width, 640);
     o3d_camera_trajectory_destroy(log);
@@ -209,7 +209,7 @@ static void test_io_errors(void** state) {
     double e[16];
     o3d_camera_trajectory_t* t = (o3d_camera_trajectory_t*)&in; /* must be cleared on failure */
 
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic("/nonexistent/o3d/camera.json", &in), O3D_ERROR_IO);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(&in, "/nonexistent/o3d/camera.json"), O3D_ERROR_IO);
     O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_trajectory(&t, "/nonexistent/o3d/t.json", NULL), O3D_ERROR_IO);
     assert_null(t);
     O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_trajectory(&t, "/tmp/o3d_t.txt", NULL), O3D_ERROR_UNSUPPORTED);
@@ -217,10 +217,10 @@ static void test_io_errors(void** state) {
 
     temp_path(path, sizeof path, "bad.json");
     write_text(path, "{\"width\": 640, \"height\": 480, \"intrinsic_matrix\": [1, 2, 3]}");
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(path, &in), O3D_ERROR_PARSE);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(&in, path), O3D_ERROR_PARSE);
     write_text(path, "{\"width\": 640, ");
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(path, &in), O3D_ERROR_PARSE);
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_parameters(path, &in, e), O3D_ERROR_PARSE);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(&in, path), O3D_ERROR_PARSE);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_parameters(&in, e, path), O3D_ERROR_PARSE);
     O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_trajectory(&t, path, NULL), O3D_ERROR_PARSE);
     remove(path);
     temp_path(path, sizeof path, "bad.log");
@@ -229,11 +229,11 @@ static void test_io_errors(void** state) {
     assert_null(t);
     remove(path);
 
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(NULL, &in), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic("/tmp/x.json", NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(&in, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_intrinsic(NULL, "/tmp/x.json"), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_io_write_pinhole_camera_intrinsic(NULL, &in), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_io_write_pinhole_camera_intrinsic("/tmp/x.json", NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_parameters(NULL, &in, e), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_parameters(&in, e, NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_io_write_pinhole_camera_parameters("/tmp/x.json", &in, NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_trajectory(NULL, "/tmp/x.json", NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_io_read_pinhole_camera_trajectory(&t, NULL, NULL), O3D_ERROR_INVALID_ARGUMENT);

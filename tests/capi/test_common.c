@@ -202,9 +202,9 @@ static void test_buffer_null_arguments(void** state) {
     size_t size = 77;
     uint8_t out[4];
     o3d_buffer_destroy(NULL); /* no-op */
-    O3D_ASSERT_FAILS(o3d_buffer_view(NULL, &data, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_buffer_get_data(NULL, out, sizeof out, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_buffer_get_data(NULL, NULL, 0, &size), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_buffer_view(&data, &size, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_buffer_get_data(out, sizeof out, &size, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_buffer_get_data(NULL, 0, &size, NULL), O3D_ERROR_INVALID_ARGUMENT);
 }
 
 static void test_buffer_view_and_copy(void** state) {
@@ -216,24 +216,24 @@ static void test_buffer_view_and_copy(void** state) {
     size_t size = 0, copied = 0;
     uint8_t* copy;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 2), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 2), O3D_OK);
     assert_int_equal(o3d_io_write_point_cloud_to_memory(&buf, pc, "xyz", NULL), O3D_OK);
     o3d_pointcloud_destroy(pc);
 
-    O3D_ASSERT_FAILS(o3d_buffer_view(buf, NULL, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_buffer_view(buf, &data, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    assert_int_equal(o3d_buffer_view(buf, &data, &size), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_buffer_view(NULL, &size, buf), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_buffer_view(&data, NULL, buf), O3D_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(o3d_buffer_view(&data, &size, buf), O3D_OK);
     assert_true(size > 10);
     assert_non_null(data);
 
     /* Size query, too-small copy, exact copy. */
-    assert_int_equal(o3d_buffer_get_data(buf, NULL, 0, &copied), O3D_OK);
+    assert_int_equal(o3d_buffer_get_data(NULL, 0, &copied, buf), O3D_OK);
     assert_int_equal(copied, size);
     copy = (uint8_t*)malloc(size);
     assert_non_null(copy);
-    O3D_ASSERT_FAILS(o3d_buffer_get_data(buf, copy, size - 1, &copied), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_buffer_get_data(copy, size - 1, &copied, buf), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_int_equal(copied, size);
-    assert_int_equal(o3d_buffer_get_data(buf, copy, size, &copied), O3D_OK);
+    assert_int_equal(o3d_buffer_get_data(copy, size, &copied, buf), O3D_OK);
     assert_memory_equal(copy, data, size);
     assert_non_null(memchr(copy, '4', size));
     free(copy);
@@ -328,13 +328,13 @@ static int estimate(double* normals_out, size_t n) {
     int ok;
     make_wavy_surface(xyz, n);
     if (o3d_pointcloud_create(&pc) != O3D_OK) return 0;
-    ok = o3d_pointcloud_set_points(pc, xyz, n) == O3D_OK && o3d_search_param_init(&sp, sizeof sp) == O3D_OK;
+    ok = o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n) == O3D_OK && o3d_search_param_init(&sp, sizeof sp) == O3D_OK;
     if (ok) {
         sp.kind = O3D_SEARCH_HYBRID;
         sp.radius = 0.1;
         sp.knn = 20;
         ok = o3d_pointcloud_estimate_normals(pc, &sp, 4) == O3D_OK &&
-             o3d_pointcloud_get_normals(pc, normals_out, n, &got) == O3D_OK && got == n;
+             o3d_pointcloud_get_array(normals_out, n, &got, pc, O3D_POINTCLOUD_NORMALS) == O3D_OK && got == n;
     }
     o3d_pointcloud_destroy(pc);
     return ok;

@@ -58,8 +58,8 @@ static o3d_pointcloud_t* height_field(size_t n) {
     }
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_normals(pc, nrm, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, nrm, n), O3D_OK);
     free(xyz);
     free(nrm);
     return pc;
@@ -101,13 +101,13 @@ typedef struct {
 static Result take(o3d_registration_result_t* r) {
     Result out;
     memset(&out, 0, sizeof out);
-    assert_int_equal(o3d_registration_result_get_transformation(r, out.transformation), O3D_OK);
-    assert_int_equal(o3d_registration_result_get_fitness(r, &out.fitness), O3D_OK);
-    assert_int_equal(o3d_registration_result_get_inlier_rmse(r, &out.rmse), O3D_OK);
-    assert_int_equal(o3d_registration_result_get_correspondence_set(r, NULL, 0, &out.pairs), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_transformation(out.transformation, r), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_fitness(&out.fitness, r), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_inlier_rmse(&out.rmse, r), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_correspondence_set(NULL, 0, &out.pairs, r), O3D_OK);
     out.corres = malloc((2 * out.pairs + 1) * sizeof(int32_t));
     assert_non_null(out.corres);
-    assert_int_equal(o3d_registration_result_get_correspondence_set(r, out.corres, out.pairs, &out.pairs), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_correspondence_set(out.corres, out.pairs, &out.pairs, r), O3D_OK);
     o3d_registration_result_destroy(r);
     return out;
 }
@@ -122,7 +122,7 @@ static int bitwise_equal(const Result* a, const Result* b) {
 static o3d_feature_t* coordinate_feature(const o3d_pointcloud_t* pc) {
     const double* xyz = NULL;
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     o3d_feature_t* f = NULL;
     assert_int_equal(o3d_feature_create_from_data(&f, xyz, 3, n), O3D_OK);
     return f;
@@ -159,8 +159,8 @@ static void test_checker_check(void** state) {
     o3d_pointcloud_t* t = NULL;
     assert_int_equal(o3d_pointcloud_create(&s), O3D_OK);
     assert_int_equal(o3d_pointcloud_create(&t), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(s, src, 3), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(t, dst, 3), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(s, O3D_POINTCLOUD_POINTS, src, 3), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(t, O3D_POINTCLOUD_POINTS, dst, 3), O3D_OK);
     o3d_correspondence_checker_t distance, edge, normal;
     assert_int_equal(o3d_correspondence_checker_init(&distance, sizeof distance, O3D_CHECKER_DISTANCE), O3D_OK);
     assert_int_equal(o3d_correspondence_checker_init(&edge, sizeof edge, O3D_CHECKER_EDGE_LENGTH), O3D_OK);
@@ -168,59 +168,59 @@ static void test_checker_check(void** state) {
 
     /* Distance: 0.5 apart unmoved; after the shift only the third pair is 0.05 off (< 0.075). */
     int32_t passed = -1;
-    assert_int_equal(o3d_correspondence_checker_check(&distance, s, t, corres, 3, NULL, &passed), O3D_OK);
+    assert_int_equal(o3d_correspondence_checker_check(&passed, &distance, s, t, corres, 3, NULL), O3D_OK);
     assert_int_equal(passed, 0);
-    assert_int_equal(o3d_correspondence_checker_check(&distance, s, t, corres, 3, shift, &passed), O3D_OK);
+    assert_int_equal(o3d_correspondence_checker_check(&passed, &distance, s, t, corres, 3, shift), O3D_OK);
     assert_int_equal(passed, 1);
     distance.threshold = 0.04;
-    assert_int_equal(o3d_correspondence_checker_check(&distance, s, t, corres, 3, shift, &passed), O3D_OK);
+    assert_int_equal(o3d_correspondence_checker_check(&passed, &distance, s, t, corres, 3, shift), O3D_OK);
     assert_int_equal(passed, 0);
-    assert_int_equal(o3d_correspondence_checker_check(&distance, s, t, corres, 2, shift, &passed), O3D_OK);
+    assert_int_equal(o3d_correspondence_checker_check(&passed, &distance, s, t, corres, 2, shift), O3D_OK);
     assert_int_equal(passed, 1);
     /* Edge length ignores the transformation; edges agree to within 0.9. */
-    assert_int_equal(o3d_correspondence_checker_check(&edge, s, t, corres, 3, NULL, &passed), O3D_OK);
+    assert_int_equal(o3d_correspondence_checker_check(&passed, &edge, s, t, corres, 3, NULL), O3D_OK);
     assert_int_equal(passed, 1);
 
     /* Invalid arguments. */
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(NULL, s, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, NULL, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&edge, NULL, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &edge, NULL, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&edge, s, NULL, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &edge, s, NULL, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&edge, s, t, NULL, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &edge, s, t, NULL, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&edge, s, t, corres, 3, NULL, NULL),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(NULL, &edge, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     const int32_t out_of_range[6] = {0, 0, 1, 1, 2, 3};
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&edge, s, t, out_of_range, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &edge, s, t, out_of_range, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     /* The normal checker needs normals on both clouds. */
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&normal, s, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &normal, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     o3d_correspondence_checker_t bad = edge;
     bad.kind = 42;
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&bad, s, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &bad, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     const double thresholds[4] = {0.0, -1.0, NAN, 1.5}; /* 1.5: edge similarity must be <= 1 */
     for (int i = 0; i < 4; ++i) {
         bad = edge;
         bad.threshold = thresholds[i];
-        O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&bad, s, t, corres, 3, NULL, &passed),
+        O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &bad, s, t, corres, 3, NULL),
                          O3D_ERROR_INVALID_ARGUMENT);
     }
     bad = distance;
     bad.threshold = 0.0;
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&bad, s, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &bad, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     bad = edge;
     bad.struct_size = 3;
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&bad, s, t, corres, 3, NULL, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &bad, s, t, corres, 3, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
     double nan_shift[16];
     memcpy(nan_shift, shift, sizeof nan_shift);
     nan_shift[3] = NAN;
-    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&distance, s, t, corres, 3, nan_shift, &passed),
+    O3D_ASSERT_FAILS(o3d_correspondence_checker_check(&passed, &distance, s, t, corres, 3, nan_shift),
                      O3D_ERROR_INVALID_ARGUMENT);
     o3d_pointcloud_destroy(s);
     o3d_pointcloud_destroy(t);
@@ -311,7 +311,7 @@ static void test_ransac_reproducible(void** state) {
     /* Jitter the target so that the chosen hypothesis shows in the bits. */
     double* xyz = NULL;
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_points_mutable_view(t, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_mutable_view(&xyz, &n, t, O3D_POINTCLOUD_POINTS), O3D_OK);
     for (size_t i = 0; i < 3 * n; ++i) xyz[i] += 0.004 * (fmod(i * 0.6180339887, 1.0) - 0.5);
     int32_t* corres = half_outliers(n);
     o3d_ransac_options_t o;
@@ -397,9 +397,9 @@ static void test_ransac_invalid_arguments(void** state) {
     o3d_pointcloud_t* bare = NULL; /* points without normals */
     const double* xyz = NULL;
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_points_view(s, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, s, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(o3d_pointcloud_create(&bare), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(bare, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(bare, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
     int32_t* corres = half_outliers(50);
     o3d_ransac_options_t ok;
     assert_int_equal(o3d_ransac_options_init(&ok, sizeof ok), O3D_OK);
@@ -635,7 +635,7 @@ static void test_shared_data_known_motion(void** state) {
     assert_int_equal(o3d_io_read_feature(&ft, target_feature_path), O3D_OK);
 
     double centre[3], m[16];
-    assert_int_equal(o3d_pointcloud_get_center(source, centre), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_center(centre, source), O3D_OK);
     rigid(75.0, 0.3, -1.0, 0.5, kT, m);
     for (int i = 0; i < 3; ++i) /* about the centroid, then (0.4, -0.2, 0.3) */
         m[4 * i + 3] = centre[i] - (m[4 * i] * centre[0] + m[4 * i + 1] * centre[1] + m[4 * i + 2] * centre[2]) +

@@ -44,9 +44,9 @@ static o3d_pointcloud_t* height_field(size_t n, const double motion[16], int att
     }
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
-    if (attributes & WITH_NORMALS) assert_int_equal(o3d_pointcloud_set_normals(pc, nrm, n), O3D_OK);
-    if (attributes & WITH_COLORS) assert_int_equal(o3d_pointcloud_set_colors(pc, rgb, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
+    if (attributes & WITH_NORMALS) assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, nrm, n), O3D_OK);
+    if (attributes & WITH_COLORS) assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COLORS, rgb, n), O3D_OK);
     free(xyz);
     free(nrm);
     free(rgb);
@@ -97,10 +97,10 @@ static void icp_recovers(int32_t estimation, int32_t kernel, double k, int sourc
     o3d_pointcloud_destroy(source);
     o3d_pointcloud_destroy(target);
     double t[16], fitness = 0, rmse = 1;
-    assert_int_equal(o3d_registration_result_get_transformation(r, t), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_transformation(t, r), O3D_OK);
     assert_true(o3d_test_max_abs_diff16(t, m) < 1e-7);
-    assert_int_equal(o3d_registration_result_get_fitness(r, &fitness), O3D_OK);
-    assert_int_equal(o3d_registration_result_get_inlier_rmse(r, &rmse), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_fitness(&fitness, r), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_inlier_rmse(&rmse, r), O3D_OK);
     assert_true(fitness == 1.0);
     assert_true(rmse < 1e-7);
     o3d_registration_result_destroy(r);
@@ -139,37 +139,37 @@ static void test_robust_kernel_weight(void** state) {
     for (size_t i = 0; i < sizeof residuals / sizeof residuals[0]; ++i) {
         const double r = residuals[i], a = fabs(r), q = r / k;
         double w = -1.0;
-        assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_L2, k, r, &w), O3D_OK);
+        assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_L2, k, r), O3D_OK);
         assert_true(w == 1.0);
         if (r != 0.0) {
-            assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_L1, k, r, &w), O3D_OK);
+            assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_L1, k, r), O3D_OK);
             assert_true(fabs(w - 1.0 / a) < 1e-15);
         }
-        assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_HUBER, k, r, &w), O3D_OK);
+        assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_HUBER, k, r), O3D_OK);
         assert_true(fabs(w - (a <= k ? 1.0 : k / a)) < 1e-15);
-        assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_CAUCHY, k, r, &w), O3D_OK);
+        assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_CAUCHY, k, r), O3D_OK);
         assert_true(fabs(w - 1.0 / (1.0 + q * q)) < 1e-15);
-        assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_GM, k, r, &w), O3D_OK);
+        assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_GM, k, r), O3D_OK);
         assert_true(fabs(w - k / ((k + r * r) * (k + r * r))) < 1e-15);
-        assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_TUKEY, k, r, &w), O3D_OK);
+        assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_TUKEY, k, r), O3D_OK);
         assert_true(fabs(w - (a <= k ? (1.0 - q * q) * (1.0 - q * q) : 0.0)) < 1e-15);
     }
     double w = 0.0;
-    assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_L1, 1.0, 0.0, &w), O3D_OK);
+    assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_L1, 1.0, 0.0), O3D_OK);
     assert_true(isinf(w)); /* 1 / |0|, as Open3D's L1Loss */
-    assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_L2, NAN, 3.0, &w), O3D_OK); /* L2 ignores k */
-    assert_int_equal(o3d_robust_kernel_weight(O3D_KERNEL_CAUCHY, 1.0, INFINITY, &w), O3D_OK);
+    assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_L2, NAN, 3.0), O3D_OK); /* L2 ignores k */
+    assert_int_equal(o3d_robust_kernel_weight(&w, O3D_KERNEL_CAUCHY, 1.0, INFINITY), O3D_OK);
     assert_true(w == 0.0);
 
-    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(O3D_KERNEL_HUBER, 1.0, 0.5, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(-1, 1.0, 0.5, &w), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(6, 1.0, 0.5, &w), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(O3D_KERNEL_TUKEY, 1.0, NAN, &w), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(NULL, O3D_KERNEL_HUBER, 1.0, 0.5), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(&w, -1, 1.0, 0.5), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(&w, 6, 1.0, 0.5), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_robust_kernel_weight(&w, O3D_KERNEL_TUKEY, 1.0, NAN), O3D_ERROR_INVALID_ARGUMENT);
     const int32_t with_k[] = {O3D_KERNEL_HUBER, O3D_KERNEL_CAUCHY, O3D_KERNEL_GM, O3D_KERNEL_TUKEY};
     const double bad_k[] = {0.0, -1.0, NAN, INFINITY};
     for (size_t i = 0; i < 4; ++i)
         for (size_t j = 0; j < 4; ++j)
-            O3D_ASSERT_FAILS(o3d_robust_kernel_weight(with_k[i], bad_k[j], 0.5, &w), O3D_ERROR_INVALID_ARGUMENT);
+            O3D_ASSERT_FAILS(o3d_robust_kernel_weight(&w, with_k[i], bad_k[j], 0.5), O3D_ERROR_INVALID_ARGUMENT);
 }
 
 /* Every new field, out of range, makes o3d_register_icp fail with INVALID_ARGUMENT and leave *out NULL. */
@@ -286,7 +286,7 @@ static void test_thread_count_does_not_change_bits(void** state) {
             o.num_threads = threads;
             o3d_registration_result_t* r = NULL;
             assert_int_equal(o3d_register_icp(&r, source, target, 0.1, NULL, &o), O3D_OK);
-            assert_int_equal(o3d_registration_result_get_transformation(r, t[threads - 1]), O3D_OK);
+            assert_int_equal(o3d_registration_result_get_transformation(t[threads - 1], r), O3D_OK);
             o3d_registration_result_destroy(r);
         }
         assert_memory_equal(t[0], t[1], sizeof t[0]);

@@ -18,16 +18,16 @@
 #include "o3d/o3d.h"
 #include "o3d_test_util.h"
 
-static int32_t prop(o3d_status (*f)(const o3d_image_t*, int32_t*), const o3d_image_t* im) {
+static int32_t prop(o3d_status (*f)(int32_t*, const o3d_image_t*), const o3d_image_t* im) {
     int32_t v = -1;
-    assert_int_equal(f(im, &v), O3D_OK);
+    assert_int_equal(f(&v, im), O3D_OK);
     return v;
 }
 
 static const float* float_view(const o3d_image_t* im, size_t* count) {
     const uint8_t* data = NULL;
     size_t size = 0;
-    assert_int_equal(o3d_image_data_view(im, &data, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_view(&data, &size, im, O3D_IMAGE_DATA), O3D_OK);
     *count = size / sizeof(float);
     return (const float*)data;
 }
@@ -48,35 +48,35 @@ static void test_create_and_views(void** state) {
     assert_int_equal(prop(o3d_image_bytes_per_channel, im), 2);
     const uint8_t* view = NULL;
     size_t size = 0;
-    assert_int_equal(o3d_image_data_view(im, &view, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_view(&view, &size, im, O3D_IMAGE_DATA), O3D_OK);
     assert_int_equal(size, 5 * 3 * 3 * 2);
     for (size_t i = 0; i < size; ++i) assert_int_equal(view[i], 0);
     uint8_t* mut = NULL;
-    assert_int_equal(o3d_image_data_mutable_view(im, &mut, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_mutable_view(&mut, &size, im, O3D_IMAGE_DATA), O3D_OK);
     for (size_t i = 0; i < size; ++i) mut[i] = (uint8_t)i;
 
     /* Copy-out: query, too small, exact. */
     size_t needed = 0;
-    assert_int_equal(o3d_image_get_data(im, NULL, 0, &needed), O3D_OK);
+    assert_int_equal(o3d_image_get_array(NULL, 0, &needed, im, O3D_IMAGE_DATA), O3D_OK);
     assert_int_equal(needed, 90);
     uint8_t buf[90];
-    O3D_ASSERT_FAILS(o3d_image_get_data(im, buf, 89, &needed), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_image_get_array(buf, 89, &needed, im, O3D_IMAGE_DATA), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_int_equal(needed, 90);
-    assert_int_equal(o3d_image_get_data(im, buf, sizeof buf, &needed), O3D_OK);
+    assert_int_equal(o3d_image_get_array(buf, sizeof buf, &needed, im, O3D_IMAGE_DATA), O3D_OK);
     for (size_t i = 0; i < 90; ++i) assert_int_equal(buf[i], (uint8_t)i);
 
     /* Clone is deep. */
     o3d_image_t* copy = NULL;
     assert_int_equal(o3d_image_clone(&copy, im), O3D_OK);
     mut[0] = 200;
-    assert_int_equal(o3d_image_get_data(copy, buf, sizeof buf, &needed), O3D_OK);
+    assert_int_equal(o3d_image_get_array(buf, sizeof buf, &needed, copy, O3D_IMAGE_DATA), O3D_OK);
     assert_int_equal(buf[0], 0);
     o3d_image_destroy(copy);
 
     /* From data: the size must match exactly. */
     o3d_image_t* d = NULL;
     assert_int_equal(o3d_image_create_from_data(&d, 3, 2, 1, 1, buf, 6), O3D_OK);
-    assert_int_equal(o3d_image_get_data(d, buf + 10, 6, &needed), O3D_OK);
+    assert_int_equal(o3d_image_get_array(buf + 10, 6, &needed, d, O3D_IMAGE_DATA), O3D_OK);
     assert_memory_equal(buf + 10, buf, 6);
     o3d_image_destroy(d);
     d = (o3d_image_t*)1;
@@ -104,13 +104,13 @@ static void test_bad_arguments(void** state) {
     const uint8_t* view = NULL;
     uint8_t* mut = NULL;
     size_t size = 0;
-    O3D_ASSERT_FAILS(o3d_image_width(NULL, &v), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_height(NULL, &v), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_num_channels(NULL, &v), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_bytes_per_channel(NULL, &v), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_data_view(NULL, &view, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_data_mutable_view(NULL, &mut, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_get_data(NULL, NULL, 0, &size), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_width(&v, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_height(&v, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_num_channels(&v, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_bytes_per_channel(&v, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_array_view(&view, &size, NULL, O3D_IMAGE_DATA), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_array_mutable_view(&mut, &size, NULL, O3D_IMAGE_DATA), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_get_array(NULL, 0, &size, NULL, O3D_IMAGE_DATA), O3D_ERROR_INVALID_ARGUMENT);
     o3d_image_t* out = NULL;
     O3D_ASSERT_FAILS(o3d_image_clone(&out, NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_image_filter(&out, NULL, O3D_IMAGE_FILTER_GAUSSIAN3), O3D_ERROR_INVALID_ARGUMENT);
@@ -121,9 +121,9 @@ static void test_bad_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_image_convert_depth_to_float(&out, NULL, 1000.0, 3.0), O3D_ERROR_INVALID_ARGUMENT);
 
     assert_int_equal(o3d_image_create(&im, 4, 4, 1, 1), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_image_width(im, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_data_view(im, NULL, &size), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_image_data_view(im, &view, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_width(NULL, im), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_array_view(NULL, &size, im, O3D_IMAGE_DATA), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_image_array_view(&view, NULL, im, O3D_IMAGE_DATA), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_image_filter(NULL, im, O3D_IMAGE_FILTER_GAUSSIAN3), O3D_ERROR_INVALID_ARGUMENT);
     /* Filters and the pyramid step need 1-channel float32. */
     out = (o3d_image_t*)1;
@@ -261,14 +261,14 @@ static void test_io_round_trips(void** state) {
         assert_int_equal(o3d_io_write_image_to_memory(&buf, im, cases[k].format, -1), O3D_OK);
         const uint8_t* bytes = NULL;
         size_t nbytes = 0;
-        assert_int_equal(o3d_buffer_view(buf, &bytes, &nbytes), O3D_OK);
+        assert_int_equal(o3d_buffer_view(&bytes, &nbytes, buf), O3D_OK);
         o3d_image_t* back = NULL;
         assert_int_equal(o3d_io_read_image_from_memory(&back, bytes, nbytes, cases[k].format), O3D_OK);
         assert_int_equal(prop(o3d_image_num_channels, back), cases[k].channels);
         assert_int_equal(prop(o3d_image_bytes_per_channel, back), cases[k].bytes);
         const uint8_t* got = NULL;
         size_t got_size = 0;
-        assert_int_equal(o3d_image_data_view(back, &got, &got_size), O3D_OK);
+        assert_int_equal(o3d_image_array_view(&got, &got_size, back, O3D_IMAGE_DATA), O3D_OK);
         assert_int_equal(got_size, size);
         assert_memory_equal(got, data, size);
         o3d_image_destroy(back);
@@ -277,7 +277,7 @@ static void test_io_round_trips(void** state) {
         snprintf(path, sizeof path, "/tmp/o3d_capi_image_%d_%zu.%s", (int)getpid(), k, cases[k].format);
         assert_int_equal(o3d_io_write_image(path, im, NULL, -1), O3D_OK);
         assert_int_equal(o3d_io_read_image(&back, path, "auto"), O3D_OK);
-        assert_int_equal(o3d_image_data_view(back, &got, &got_size), O3D_OK);
+        assert_int_equal(o3d_image_array_view(&got, &got_size, back, O3D_IMAGE_DATA), O3D_OK);
         assert_memory_equal(got, data, size);
         o3d_image_destroy(back);
         remove(path);
@@ -295,8 +295,8 @@ static void test_io_round_trips(void** state) {
     const uint8_t* hb = NULL;
     const uint8_t* lb = NULL;
     size_t hn = 0, ln = 0;
-    assert_int_equal(o3d_buffer_view(hi, &hb, &hn), O3D_OK);
-    assert_int_equal(o3d_buffer_view(lo, &lb, &ln), O3D_OK);
+    assert_int_equal(o3d_buffer_view(&hb, &hn, hi), O3D_OK);
+    assert_int_equal(o3d_buffer_view(&lb, &ln, lo), O3D_OK);
     assert_true(ln < hn);
     o3d_image_t* back = NULL;
     assert_int_equal(o3d_io_read_image_from_memory(&back, hb, hn, "jpg"), O3D_OK);

@@ -21,14 +21,14 @@ static o3d_pointcloud_t* make_cloud(size_t n, int normals, int colors) {
     double* xyz = malloc(3 * n * sizeof(double));
     assert_non_null(xyz);
     for (size_t i = 0; i < 3 * n; ++i) xyz[i] = 0.1 * (double)i - 7.3;
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
     if (normals) {
         for (size_t i = 0; i < 3 * n; ++i) xyz[i] = (i % 3 == 2) ? 1.0 : 0.0;
-        assert_int_equal(o3d_pointcloud_set_normals(pc, xyz, n), O3D_OK);
+        assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, xyz, n), O3D_OK);
     }
     if (colors) {
         for (size_t i = 0; i < 3 * n; ++i) xyz[i] = (double)(i % 256) / 255.0;
-        assert_int_equal(o3d_pointcloud_set_colors(pc, xyz, n), O3D_OK);
+        assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COLORS, xyz, n), O3D_OK);
     }
     free(xyz);
     return pc;
@@ -36,19 +36,19 @@ static o3d_pointcloud_t* make_cloud(size_t n, int normals, int colors) {
 
 static size_t cloud_size(const o3d_pointcloud_t* pc) {
     size_t n = 0;
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     return n;
 }
 
 static int32_t has_normals(const o3d_pointcloud_t* pc) {
     int32_t v = -1;
-    assert_int_equal(o3d_pointcloud_has_normals(pc, &v), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&v, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     return v;
 }
 
 static int32_t has_colors(const o3d_pointcloud_t* pc) {
     int32_t v = -1;
-    assert_int_equal(o3d_pointcloud_has_colors(pc, &v), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&v, pc, O3D_POINTCLOUD_COLORS), O3D_OK);
     return v;
 }
 
@@ -96,14 +96,14 @@ static void test_memory_round_trip(void** state) {
             assert_int_equal(o3d_io_write_point_cloud_to_memory(&buf, in, formats[f], &w), O3D_OK);
             const uint8_t* data = NULL;
             size_t size = 0;
-            assert_int_equal(o3d_buffer_view(buf, &data, &size), O3D_OK);
+            assert_int_equal(o3d_buffer_view(&data, &size, buf), O3D_OK);
             assert_true(size > 0);
             o3d_pointcloud_t* out = NULL;
             assert_int_equal(o3d_io_read_point_cloud_from_memory(&out, data, size, formats[f], NULL), O3D_OK);
             assert_int_equal(cloud_size(out), 50);
             double p[150];
             size_t n = 0;
-            assert_int_equal(o3d_pointcloud_get_points(out, p, 50, &n), O3D_OK);
+            assert_int_equal(o3d_pointcloud_get_array(p, 50, &n, out, O3D_POINTCLOUD_POINTS), O3D_OK);
             assert_int_equal(n, 50);
             assert_float_equal(p[149], 0.1 * 149 - 7.3, 1e-5);
             assert_int_equal(has_normals(out), f == 0 || f == 1 || f == 3);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "o3d/kdtree.h"
+#include "o3d/pointcloud.h"
 #include "o3d_test_util.h"
 
 #define INV O3D_ERROR_INVALID_ARGUMENT
@@ -48,12 +49,12 @@ static size_t brute_count(const double* q, double r) {
 
 static void check_result(o3d_search_result_t* res, const o3d_search_param_t* p) {
     size_t nq, total;
-    assert_int_equal(o3d_search_result_counts(res, &nq, &total), O3D_OK);
+    assert_int_equal(o3d_search_result_counts(&nq, &total, res), O3D_OK);
     assert_int_equal(nq, Q);
     const int64_t* off;
     const int32_t* idx;
     const double* d2;
-    assert_int_equal(o3d_search_result_view(res, &off, &idx, &d2), O3D_OK);
+    assert_int_equal(o3d_search_result_view(&off, &idx, &d2, res), O3D_OK);
     assert_int_equal(off[0], 0);
     assert_int_equal(off[Q], (int64_t)total);
     for (int q = 0; q < Q; ++q) {
@@ -80,7 +81,7 @@ static void test_search_matches_brute_force(void** state) {
     o3d_kdtree_t* tree = NULL;
     assert_int_equal(o3d_kdtree_create_from_points(&tree, g_points, N), O3D_OK);
     size_t n;
-    assert_int_equal(o3d_kdtree_size(tree, &n), O3D_OK);
+    assert_int_equal(o3d_kdtree_size(&n, tree), O3D_OK);
     assert_int_equal(n, N);
     o3d_search_param_t p;
     assert_int_equal(o3d_search_param_init(&p, sizeof p), O3D_OK);
@@ -90,7 +91,7 @@ static void test_search_matches_brute_force(void** state) {
         p.knn = 12;
         p.radius = 0.1;
         o3d_search_result_t* res = NULL;
-        assert_int_equal(o3d_kdtree_search(tree, g_queries, Q, &p, 2, &res), O3D_OK);
+        assert_int_equal(o3d_kdtree_search(&res, tree, g_queries, Q, &p, 2), O3D_OK);
         check_result(res, &p);
         o3d_search_result_destroy(res);
     }
@@ -101,7 +102,7 @@ static void test_threads_f32_and_copies(void** state) {
     (void)state;
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, g_points, N), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, g_points, N), O3D_OK);
     o3d_kdtree_t* tree = NULL;
     assert_int_equal(o3d_kdtree_create_from_pointcloud(&tree, pc), O3D_OK);
     o3d_pointcloud_destroy(pc); /* the tree owns its copy */
@@ -111,11 +112,11 @@ static void test_threads_f32_and_copies(void** state) {
     p.radius = 0.15;
     p.knn = 20;
     o3d_search_result_t *a = NULL, *b = NULL, *f = NULL;
-    assert_int_equal(o3d_kdtree_search(tree, g_queries, Q, &p, 1, &a), O3D_OK);
-    assert_int_equal(o3d_kdtree_search(tree, g_queries, Q, &p, 2, &b), O3D_OK);
+    assert_int_equal(o3d_kdtree_search(&a, tree, g_queries, Q, &p, 1), O3D_OK);
+    assert_int_equal(o3d_kdtree_search(&b, tree, g_queries, Q, &p, 2), O3D_OK);
     size_t qa, ta, qb, tb;
-    assert_int_equal(o3d_search_result_counts(a, &qa, &ta), O3D_OK);
-    assert_int_equal(o3d_search_result_counts(b, &qb, &tb), O3D_OK);
+    assert_int_equal(o3d_search_result_counts(&qa, &ta, a), O3D_OK);
+    assert_int_equal(o3d_search_result_counts(&qb, &tb, b), O3D_OK);
     assert_int_equal(ta, tb);
     int64_t* offa = malloc((Q + 1) * sizeof *offa);
     int64_t* offb = malloc((Q + 1) * sizeof *offb);
@@ -123,18 +124,27 @@ static void test_threads_f32_and_copies(void** state) {
     int32_t* ib = malloc(tb * sizeof *ib);
     double* da = malloc(ta * sizeof *da);
     double* db = malloc(tb * sizeof *db);
-    assert_int_equal(o3d_search_result_get_offsets(a, offa, Q + 1), O3D_OK);
-    assert_int_equal(o3d_search_result_get_offsets(b, offb, Q + 1), O3D_OK);
-    assert_int_equal(o3d_search_result_get_indices(a, ia, ta), O3D_OK);
-    assert_int_equal(o3d_search_result_get_indices(b, ib, tb), O3D_OK);
-    assert_int_equal(o3d_search_result_get_distances2(a, da, ta), O3D_OK);
-    assert_int_equal(o3d_search_result_get_distances2(b, db, tb), O3D_OK);
+    size_t got = 0;
+    assert_int_equal(o3d_search_result_get_offsets(offa, Q + 1, &got, a), O3D_OK);
+    assert_int_equal(got, Q + 1);
+    assert_int_equal(o3d_search_result_get_offsets(offb, Q + 1, &got, b), O3D_OK);
+    assert_int_equal(o3d_search_result_get_indices(ia, ta, &got, a), O3D_OK);
+    assert_int_equal(got, ta);
+    assert_int_equal(o3d_search_result_get_indices(ib, tb, &got, b), O3D_OK);
+    assert_int_equal(o3d_search_result_get_distances2(da, ta, &got, a), O3D_OK);
+    assert_int_equal(o3d_search_result_get_distances2(db, tb, &got, b), O3D_OK);
+    assert_int_equal(got, tb);
+    /* NULL out only reports the count */
+    got = 0;
+    assert_int_equal(o3d_search_result_get_indices(NULL, 0, &got, a), O3D_OK);
+    assert_int_equal(got, ta);
     assert_memory_equal(offa, offb, (Q + 1) * sizeof *offa);
     assert_memory_equal(ia, ib, ta * sizeof *ia);
     assert_memory_equal(da, db, ta * sizeof *da); /* bitwise */
-    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(a, offa, Q), O3D_ERROR_BUFFER_TOO_SMALL);
-    O3D_ASSERT_FAILS(o3d_search_result_get_indices(a, ia, ta - 1), O3D_ERROR_BUFFER_TOO_SMALL);
-    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(a, da, ta - 1), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(offa, Q, &got, a), O3D_ERROR_BUFFER_TOO_SMALL);
+    assert_int_equal(got, Q + 1); /* the needed count is reported even when it does not fit */
+    O3D_ASSERT_FAILS(o3d_search_result_get_indices(ia, ta - 1, &got, a), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(da, ta - 1, &got, a), O3D_ERROR_BUFFER_TOO_SMALL);
 
     /* float32 queries: the same as double queries holding the same (float-rounded) values. */
     float fq[3 * Q];
@@ -144,13 +154,13 @@ static void test_threads_f32_and_copies(void** state) {
         dq[i] = (double)fq[i];
     }
     o3d_search_result_t* d = NULL;
-    assert_int_equal(o3d_kdtree_search_f32(tree, fq, Q, &p, 0, &f), O3D_OK);
-    assert_int_equal(o3d_kdtree_search(tree, dq, Q, &p, 0, &d), O3D_OK);
+    assert_int_equal(o3d_kdtree_search_f32(&f, tree, fq, Q, &p, 0), O3D_OK);
+    assert_int_equal(o3d_kdtree_search(&d, tree, dq, Q, &p, 0), O3D_OK);
     const int64_t *of, *od;
     const int32_t *xf, *xd;
     const double *df, *dd;
-    assert_int_equal(o3d_search_result_view(f, &of, &xf, &df), O3D_OK);
-    assert_int_equal(o3d_search_result_view(d, &od, &xd, &dd), O3D_OK);
+    assert_int_equal(o3d_search_result_view(&of, &xf, &df, f), O3D_OK);
+    assert_int_equal(o3d_search_result_view(&od, &xd, &dd, d), O3D_OK);
     assert_memory_equal(of, od, (Q + 1) * sizeof *of);
     assert_memory_equal(xf, xd, (size_t)of[Q] * sizeof *xf);
     free(offa), free(offb), free(ia), free(ib), free(da), free(db);
@@ -168,16 +178,16 @@ static void test_knn_larger_than_tree_and_empty(void** state) {
     o3d_search_param_t p;
     assert_int_equal(o3d_search_param_init(&p, sizeof p), O3D_OK); /* KNN 30 > 5 points */
     o3d_search_result_t* r = NULL;
-    assert_int_equal(o3d_kdtree_search(tree, g_queries, 2, &p, 0, &r), O3D_OK);
+    assert_int_equal(o3d_kdtree_search(&r, tree, g_queries, 2, &p, 0), O3D_OK);
     size_t nq, total;
-    assert_int_equal(o3d_search_result_counts(r, &nq, &total), O3D_OK);
+    assert_int_equal(o3d_search_result_counts(&nq, &total, r), O3D_OK);
     assert_int_equal(total, 10);
     o3d_search_result_destroy(r);
     o3d_kdtree_destroy(tree);
 
     assert_int_equal(o3d_kdtree_create_from_points(&tree, NULL, 0), O3D_OK);
-    assert_int_equal(o3d_kdtree_search(tree, g_queries, 2, NULL, 0, &r), O3D_OK);
-    assert_int_equal(o3d_search_result_counts(r, &nq, &total), O3D_OK);
+    assert_int_equal(o3d_kdtree_search(&r, tree, g_queries, 2, NULL, 0), O3D_OK);
+    assert_int_equal(o3d_search_result_counts(&nq, &total, r), O3D_OK);
     assert_int_equal(nq, 2);
     assert_int_equal(total, 0);
     o3d_search_result_destroy(r);
@@ -198,28 +208,28 @@ static void test_bad_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_kdtree_size(NULL, NULL), INV);
     assert_int_equal(o3d_kdtree_create_from_points(&tree, g_points, 10), O3D_OK);
     size_t n;
-    O3D_ASSERT_FAILS(o3d_kdtree_size(tree, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_size(NULL, &n), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_size(NULL, tree), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_size(&n, NULL), INV);
     o3d_search_param_t p;
     assert_int_equal(o3d_search_param_init(&p, sizeof p), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_kdtree_search(NULL, g_queries, 1, &p, 0, &r), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, NULL, 1, &p, 0, &r), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, 0, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, -2, &r), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, bad, 2, &p, 0, &r), INV); /* NaN query */
-    O3D_ASSERT_FAILS(o3d_kdtree_search_f32(tree, NULL, 1, &p, 0, &r), INV);
-    O3D_ASSERT_FAILS(o3d_kdtree_search_f32(NULL, NULL, 0, &p, 0, &r), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, NULL, g_queries, 1, &p, 0), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, NULL, 1, &p, 0), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(NULL, tree, g_queries, 1, &p, 0), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, g_queries, 1, &p, -2), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, bad, 2, &p, 0), INV); /* NaN query */
+    O3D_ASSERT_FAILS(o3d_kdtree_search_f32(&r, tree, NULL, 1, &p, 0), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search_f32(&r, NULL, NULL, 0, &p, 0), INV);
     p.kind = O3D_SEARCH_RADIUS;
     p.radius = -1;
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, 0, &r), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, g_queries, 1, &p, 0), INV);
     p.radius = INFINITY;
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, 0, &r), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, g_queries, 1, &p, 0), INV);
     p.kind = O3D_SEARCH_HYBRID;
     p.radius = 0.1;
     p.knn = -3;
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, 0, &r), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, g_queries, 1, &p, 0), INV);
     p.kind = 42;
-    O3D_ASSERT_FAILS(o3d_kdtree_search(tree, g_queries, 1, &p, 0, &r), INV);
+    O3D_ASSERT_FAILS(o3d_kdtree_search(&r, tree, g_queries, 1, &p, 0), INV);
     assert_null(r);
 
     int64_t off[2];
@@ -229,22 +239,23 @@ static void test_bad_arguments(void** state) {
     const int32_t* vi;
     const double* vd;
     size_t nq, total;
-    O3D_ASSERT_FAILS(o3d_search_result_counts(NULL, &nq, &total), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_view(NULL, &vo, &vi, &vd), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(NULL, off, 2), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_indices(NULL, idx, 1), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(NULL, d2, 1), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_counts(&nq, &total, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_view(&vo, &vi, &vd, NULL), INV);
+    size_t got = 0;
+    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(off, 2, &got, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_get_indices(idx, 1, &got, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(d2, 1, &got, NULL), INV);
     assert_int_equal(o3d_search_param_init(&p, sizeof p), O3D_OK);
     p.knn = 1;
-    assert_int_equal(o3d_kdtree_search(tree, g_queries, 1, &p, 0, &r), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_search_result_counts(r, NULL, &total), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_counts(r, &nq, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_view(r, NULL, &vi, &vd), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_view(r, &vo, NULL, &vd), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_view(r, &vo, &vi, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(r, NULL, 2), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_indices(r, NULL, 1), INV);
-    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(r, NULL, 1), INV);
+    assert_int_equal(o3d_kdtree_search(&r, tree, g_queries, 1, &p, 0), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_search_result_counts(NULL, &total, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_counts(&nq, NULL, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_view(NULL, &vi, &vd, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_view(&vo, NULL, &vd, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_view(&vo, &vi, NULL, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_get_offsets(off, 2, NULL, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_get_indices(idx, 1, NULL, r), INV);
+    O3D_ASSERT_FAILS(o3d_search_result_get_distances2(d2, 1, NULL, r), INV);
     o3d_search_result_destroy(r);
     o3d_search_result_destroy(NULL);
     o3d_kdtree_destroy(tree);

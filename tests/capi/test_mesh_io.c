@@ -32,19 +32,19 @@ static o3d_trianglemesh_t* make_tetra(void) {
 
 static size_t num_vertices(const o3d_trianglemesh_t* m) {
     size_t n = 0;
-    assert_int_equal(o3d_trianglemesh_num_vertices(m, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_vertices(&n, m), O3D_OK);
     return n;
 }
 
 static size_t num_triangles(const o3d_trianglemesh_t* m) {
     size_t n = 0;
-    assert_int_equal(o3d_trianglemesh_num_triangles(m, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&n, m), O3D_OK);
     return n;
 }
 
 static int32_t has(const o3d_trianglemesh_t* m, int32_t which) {
     int32_t v = -1;
-    assert_int_equal(o3d_trianglemesh_has_array(m, which, &v), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_has_array(&v, m, which), O3D_OK);
     return v;
 }
 
@@ -86,7 +86,7 @@ static void test_memory_round_trip_every_format(void** state) {
             assert_int_equal(o3d_io_write_triangle_mesh_to_memory(&buf, m, formats[f], &w), O3D_OK);
             const uint8_t* data = NULL;
             size_t size = 0;
-            assert_int_equal(o3d_buffer_view(buf, &data, &size), O3D_OK);
+            assert_int_equal(o3d_buffer_view(&data, &size, buf), O3D_OK);
             o3d_trianglemesh_t* r = NULL;
             assert_int_equal(o3d_io_read_triangle_mesh_from_memory(&r, data, size, formats[f], NULL), O3D_OK);
             const int stl = strcmp(formats[f], "stl") == 0;
@@ -97,7 +97,7 @@ static void test_memory_round_trip_every_format(void** state) {
             assert_int_equal(has(r, O3D_MESH_TRIANGLE_NORMALS), stl);
             double v[12];
             size_t rows = 0;
-            assert_int_equal(o3d_trianglemesh_get_array(r, O3D_MESH_VERTICES, v, 4, &rows), stl ? O3D_ERROR_BUFFER_TOO_SMALL : O3D_OK);
+            assert_int_equal(o3d_trianglemesh_get_array(v, 4, &rows, r, O3D_MESH_VERTICES), stl ? O3D_ERROR_BUFFER_TOO_SMALL : O3D_OK);
             if (!stl) assert_float_equal(v[11], 1.75, 1e-6);
             /* STL with post-processing merges the 12 corners back into 4 vertices. */
             o3d_mesh_read_options_t ro;

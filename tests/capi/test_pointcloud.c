@@ -17,7 +17,7 @@
 static o3d_pointcloud_t* make_cloud(const double* xyz, size_t n) {
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
     return pc;
 }
 
@@ -28,52 +28,52 @@ static void test_lifecycle_and_accessors(void** state) {
     o3d_pointcloud_t* pc = make_cloud(kSquare, 4);
     size_t n = 0;
     int32_t flag = -1;
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     assert_int_equal(n, 4);
-    assert_int_equal(o3d_pointcloud_has_points(pc, &flag), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&flag, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(flag, 1);
-    assert_int_equal(o3d_pointcloud_has_normals(pc, &flag), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&flag, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     assert_int_equal(flag, 0);
 
     const float normals[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0.5f, 1};
-    assert_int_equal(o3d_pointcloud_set_normals_f32(pc, normals, 4), O3D_OK);
-    assert_int_equal(o3d_pointcloud_has_normals(pc, &flag), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_NORMALS, normals, 4), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&flag, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     assert_int_equal(flag, 1);
     double out[12];
-    assert_int_equal(o3d_pointcloud_get_normals(pc, out, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(out, 4, &n, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     assert_true(out[10] == 0.5 && out[11] == 1.0);  // converted in the copy
 
     /* Copy-out: NULL queries the count; a short buffer is reported with the needed count. */
     n = 0;
-    assert_int_equal(o3d_pointcloud_get_points(pc, NULL, 0, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(NULL, 0, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 4);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_points(pc, out, 3, &n), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(out, 3, &n, pc, O3D_POINTCLOUD_POINTS), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_int_equal(n, 4);
-    assert_int_equal(o3d_pointcloud_get_points(pc, out, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(out, 4, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_memory_equal(out, kSquare, sizeof kSquare);
 
     /* Views point at the live data; writing through the mutable view changes the cloud. */
     const double* view = NULL;
-    assert_int_equal(o3d_pointcloud_points_view(pc, &view, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 4);
     assert_true(view[3] == 2.0);
     double* mview = NULL;
-    assert_int_equal(o3d_pointcloud_points_mutable_view(pc, &mview, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_mutable_view(&mview, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     mview[3] = 7.0;
     assert_true(view == mview);
     double maxb[3];
-    assert_int_equal(o3d_pointcloud_get_max_bound(pc, maxb), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_max_bound(maxb, pc), O3D_OK);
     assert_true(maxb[0] == 7.0);
-    assert_int_equal(o3d_pointcloud_colors_view(pc, &view, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&view, &n, pc, O3D_POINTCLOUD_COLORS), O3D_OK);
     assert_null(view);
     assert_int_equal(n, 0);
 
     o3d_pointcloud_t* copy = NULL;
     assert_int_equal(o3d_pointcloud_clone(&copy, pc), O3D_OK);
     assert_int_equal(o3d_pointcloud_clear(pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     assert_int_equal(n, 0);
-    assert_int_equal(o3d_pointcloud_size(copy, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, copy), O3D_OK);
     assert_int_equal(n, 4);  // the clone is independent
     o3d_pointcloud_destroy(copy);
     o3d_pointcloud_destroy(pc);
@@ -84,28 +84,28 @@ static void test_geometry_ops(void** state) {
     (void)state;
     o3d_pointcloud_t* pc = make_cloud(kSquare, 4);
     double c[3], lo[3], hi[3];
-    assert_int_equal(o3d_pointcloud_get_center(pc, c), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_center(c, pc), O3D_OK);
     assert_true(c[0] == 1.0 && c[1] == 1.0 && c[2] == 0.0);
     const double t[3] = {1, 2, 3};
     assert_int_equal(o3d_pointcloud_translate(pc, t, 0), O3D_OK);  /* center -> (1,2,3) */
-    assert_int_equal(o3d_pointcloud_get_axis_aligned_bounding_box(pc, lo, hi), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_axis_aligned_bounding_box(lo, hi, pc), O3D_OK);
     assert_true(lo[0] == 0 && lo[1] == 1 && lo[2] == 3 && hi[0] == 2 && hi[1] == 3);
     assert_int_equal(o3d_pointcloud_scale(pc, 2.0, NULL), O3D_OK); /* about the center */
-    assert_int_equal(o3d_pointcloud_get_min_bound(pc, lo), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_min_bound(lo, pc), O3D_OK);
     assert_true(lo[0] == -1 && lo[1] == 0 && lo[2] == 3);
     /* Row-major 90 degrees about Z, then a translation (row-major 4x4). */
     const double m[16] = {0, -1, 0, 10, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    assert_int_equal(o3d_pointcloud_set_points(pc, kSquare, 4), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, kSquare, 4), O3D_OK);
     assert_int_equal(o3d_pointcloud_transform(pc, m), O3D_OK);
     double p[12];
     size_t n;
-    assert_int_equal(o3d_pointcloud_get_points(pc, p, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 4, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_true(fabs(p[3] - 10) < 1e-12 && fabs(p[4] - 2) < 1e-12);  /* (2,0,0) -> (10,2,0) */
     const double r[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
     const double origin[3] = {0, 0, 0};
-    assert_int_equal(o3d_pointcloud_set_points(pc, kSquare, 4), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, kSquare, 4), O3D_OK);
     assert_int_equal(o3d_pointcloud_rotate(pc, r, origin), O3D_OK);
-    assert_int_equal(o3d_pointcloud_get_points(pc, p, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 4, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_true(fabs(p[3]) < 1e-12 && fabs(p[4] - 2) < 1e-12);
     const double bad[16] = {NAN};
     O3D_ASSERT_FAILS(o3d_pointcloud_transform(pc, bad), INV);
@@ -122,12 +122,12 @@ static void test_selection_and_filters(void** state) {
     assert_int_equal(o3d_pointcloud_select_by_index(&sel, pc, idx, 3, 0), O3D_OK);
     double p[15];
     size_t n;
-    assert_int_equal(o3d_pointcloud_get_points(sel, p, 5, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 5, &n, sel, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 2);
     assert_true(p[0] == 1 && p[3] == 4);
     o3d_pointcloud_destroy(sel);
     assert_int_equal(o3d_pointcloud_select_by_index(&sel, pc, idx, 3, 1), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(sel, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, sel), O3D_OK);
     assert_int_equal(n, 3);
     o3d_pointcloud_destroy(sel);
     const int32_t out_of_range[] = {5};
@@ -139,10 +139,10 @@ static void test_selection_and_filters(void** state) {
     O3D_ASSERT_FAILS(o3d_pointcloud_select_by_index(&sel, pc, NULL, 1, 0), INV);
 
     assert_int_equal(o3d_pointcloud_remove_non_finite_points(pc, 0, 1), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     assert_int_equal(n, 4);
     assert_int_equal(o3d_pointcloud_remove_non_finite_points(pc, 1, 0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     assert_int_equal(n, 3);
     o3d_pointcloud_destroy(pc);
 }
@@ -155,20 +155,20 @@ static void test_down_sampling(void** state) {
     double p[12];
     size_t n;
     assert_int_equal(o3d_pointcloud_voxel_down_sample(&d, pc, 1.0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_get_points(d, p, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 4, &n, d, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 2);
     assert_true(fabs(p[0] - 0.2) < 1e-15 && fabs(p[2] - 0.1) < 1e-15 && p[3] == 3.0);
     o3d_pointcloud_destroy(d);
     assert_int_equal(o3d_pointcloud_uniform_down_sample(&d, pc, 2), O3D_OK);
-    assert_int_equal(o3d_pointcloud_get_points(d, p, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 4, &n, d, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_true(n == 2 && p[3] == 3.0);
     o3d_pointcloud_destroy(d);
     assert_int_equal(o3d_pointcloud_random_down_sample(&d, pc, 0.5, 9), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(d, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, d), O3D_OK);
     assert_int_equal(n, 2);
     o3d_pointcloud_destroy(d);
     assert_int_equal(o3d_pointcloud_farthest_point_down_sample(&d, pc, 2, 0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_get_points(d, p, 4, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_get_array(p, 4, &n, d, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_true(n == 2 && p[0] == 0 && p[3] == 3.0);  /* start, then the far point */
     o3d_pointcloud_destroy(d);
 
@@ -204,7 +204,7 @@ static void test_normals_and_distances(void** state) {
     assert_int_equal(o3d_pointcloud_orient_normals_to_align_with_direction(pc, down), O3D_OK);
     const double* nv;
     size_t n;
-    assert_int_equal(o3d_pointcloud_normals_view(pc, &nv, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&nv, &n, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     assert_int_equal(n, 100);
     for (int i = 0; i < 100; ++i) assert_true(fabs(nv[3 * i + 2] + 1.0) < 1e-12);
     assert_int_equal(o3d_pointcloud_orient_normals_towards_camera_location(pc, NULL), O3D_OK); /* origin is below */
@@ -215,18 +215,18 @@ static void test_normals_and_distances(void** state) {
     assert_int_equal(o3d_pointcloud_normalize_normals(pc), O3D_OK);
 
     double d[100];
-    assert_int_equal(o3d_pointcloud_compute_nearest_neighbor_distance(pc, d, 100, &n, 0), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_nearest_neighbor_distance(d, 100, &n, pc, 0), O3D_OK);
     for (int i = 0; i < 100; ++i) assert_true(fabs(d[i] - 1.0) < 1e-15);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(pc, d, 99, &n, 0), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(d, 99, &n, pc, 0), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_int_equal(n, 100);
     const double one[3] = {0, 0, 3};
     o3d_pointcloud_t* other = make_cloud(one, 1);
-    assert_int_equal(o3d_pointcloud_compute_point_cloud_distance(other, pc, d, 100, &n, 1), O3D_OK);
+    assert_int_equal(o3d_pointcloud_compute_point_cloud_distance(d, 100, &n, other, pc, 1), O3D_OK);
     assert_int_equal(n, 1);
     assert_true(fabs(d[0] - 2.0) < 1e-15);
     o3d_pointcloud_t* empty = NULL;
     assert_int_equal(o3d_pointcloud_create(&empty), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(other, empty, d, 100, &n, 1), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(d, 100, &n, other, empty, 1), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_orient_normals_to_align_with_direction(empty, NULL), INV); /* no normals */
 
     param.radius = NAN;
@@ -259,12 +259,12 @@ static void test_append(void** state) {
     assert_int_equal(o3d_pointcloud_append(a, b), O3D_OK); /* b has no colors: they are dropped */
     size_t n;
     int32_t flag;
-    assert_int_equal(o3d_pointcloud_size(a, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, a), O3D_OK);
     assert_int_equal(n, 6);
-    assert_int_equal(o3d_pointcloud_has_colors(a, &flag), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&flag, a, O3D_POINTCLOUD_COLORS), O3D_OK);
     assert_int_equal(flag, 0);
     assert_int_equal(o3d_pointcloud_append(a, a), O3D_OK); /* self-append doubles */
-    assert_int_equal(o3d_pointcloud_size(a, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, a), O3D_OK);
     assert_int_equal(n, 12);
     o3d_pointcloud_destroy(a);
     o3d_pointcloud_destroy(b);
@@ -286,33 +286,33 @@ static void test_null_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_pointcloud_create(NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_clone(NULL, pc), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_clone(&out, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_size(NULL, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_size(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_points(NULL, &flag), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_points(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_normals(NULL, &flag), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_normals(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_colors(NULL, &flag), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_has_colors(pc, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_size(&n, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_size(NULL, pc), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(&flag, NULL, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(NULL, pc, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(&flag, NULL, O3D_POINTCLOUD_NORMALS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(NULL, pc, O3D_POINTCLOUD_NORMALS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(&flag, NULL, O3D_POINTCLOUD_COLORS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(NULL, pc, O3D_POINTCLOUD_COLORS), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_clear(NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_points(NULL, kSquare, 4), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_points(pc, NULL, 4), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_points_f32(pc, NULL, 4), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_normals(pc, NULL, 4), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_normals_f32(NULL, NULL, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_colors(pc, NULL, 1), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_set_colors_f32(pc, NULL, 1), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_points(NULL, buf, 4, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_points(pc, buf, 4, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_normals(NULL, buf, 4, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_colors(pc, buf, 4, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_points_view(NULL, &cview, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_points_view(pc, NULL, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_normals_view(pc, &cview, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_colors_view(NULL, &cview, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_points_mutable_view(pc, NULL, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_normals_mutable_view(NULL, &mview, &n), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_colors_mutable_view(pc, &mview, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(NULL, O3D_POINTCLOUD_POINTS, kSquare, 4), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, NULL, 4), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_POINTS, NULL, 4), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, NULL, 4), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array_f32(NULL, O3D_POINTCLOUD_NORMALS, NULL, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COLORS, NULL, 1), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_COLORS, NULL, 1), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(buf, 4, &n, NULL, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(buf, 4, NULL, pc, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(buf, 4, &n, NULL, O3D_POINTCLOUD_NORMALS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_array(buf, 4, NULL, pc, O3D_POINTCLOUD_COLORS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_view(&cview, &n, NULL, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_view(NULL, &n, pc, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_view(&cview, NULL, pc, O3D_POINTCLOUD_NORMALS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_view(&cview, &n, NULL, O3D_POINTCLOUD_COLORS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_mutable_view(NULL, &n, pc, O3D_POINTCLOUD_POINTS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_mutable_view(&mview, &n, NULL, O3D_POINTCLOUD_NORMALS), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_mutable_view(&mview, NULL, pc, O3D_POINTCLOUD_COLORS), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_append(NULL, pc), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_append(pc, NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_transform(NULL, m16), INV);
@@ -322,12 +322,12 @@ static void test_null_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_pointcloud_rotate(NULL, m9, NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_rotate(pc, NULL, NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_scale(NULL, 1.0, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_min_bound(NULL, v3), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_min_bound(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_max_bound(pc, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_center(NULL, v3), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_axis_aligned_bounding_box(pc, NULL, v3), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_get_axis_aligned_bounding_box(pc, v3, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_min_bound(v3, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_min_bound(NULL, pc), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_max_bound(NULL, pc), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_center(v3, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_axis_aligned_bounding_box(NULL, v3, pc), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_get_axis_aligned_bounding_box(v3, NULL, pc), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_paint_uniform_color(pc, NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_select_by_index(NULL, pc, idx, 1, 0), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_select_by_index(&out, NULL, idx, 1, 0), INV);
@@ -342,11 +342,11 @@ static void test_null_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_pointcloud_estimate_normals(NULL, NULL, 0), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_orient_normals_to_align_with_direction(NULL, NULL), INV);
     O3D_ASSERT_FAILS(o3d_pointcloud_orient_normals_towards_camera_location(NULL, NULL), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(NULL, buf, 12, &n, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(pc, buf, 12, NULL, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(NULL, pc, buf, 12, &n, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(pc, NULL, buf, 12, &n, 0), INV);
-    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(pc, pc, buf, 12, NULL, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(buf, 12, &n, NULL, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_nearest_neighbor_distance(buf, 12, NULL, pc, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(buf, 12, &n, NULL, pc, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(buf, 12, &n, pc, NULL, 0), INV);
+    O3D_ASSERT_FAILS(o3d_pointcloud_compute_point_cloud_distance(buf, 12, NULL, pc, pc, 0), INV);
     assert_null(out);
     o3d_pointcloud_destroy(pc);
 }

@@ -110,16 +110,16 @@ static o3d_pose_graph_t* ring(void) {
 
 static void assert_same_graph(const o3d_pose_graph_t* a, const o3d_pose_graph_t* b) {
     size_t na, nb, ea, eb;
-    assert_int_equal(o3d_pose_graph_num_nodes(a, &na), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_nodes(b, &nb), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_edges(a, &ea), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_edges(b, &eb), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&na, a), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&nb, b), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&ea, a), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&eb, b), O3D_OK);
     assert_int_equal(na, nb);
     assert_int_equal(ea, eb);
     for (size_t i = 0; i < na; ++i) {
         double pa[16], pb[16];
-        assert_int_equal(o3d_pose_graph_get_node(a, i, pa), O3D_OK);
-        assert_int_equal(o3d_pose_graph_get_node(b, i, pb), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_node(pa, a, i), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_node(pb, b, i), O3D_OK);
         assert_memory_equal(pa, pb, sizeof pa);
     }
     for (size_t k = 0; k < ea; ++k) {
@@ -127,8 +127,8 @@ static void assert_same_graph(const o3d_pose_graph_t* a, const o3d_pose_graph_t*
         memset(&x, 0, sizeof x);
         memset(&y, 0, sizeof y);
         x.struct_size = y.struct_size = sizeof x;
-        assert_int_equal(o3d_pose_graph_get_edge(a, k, &x), O3D_OK);
-        assert_int_equal(o3d_pose_graph_get_edge(b, k, &y), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_edge(&x, a, k), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_edge(&y, b, k), O3D_OK);
         assert_memory_equal(&x, &y, sizeof x);
     }
 }
@@ -162,20 +162,20 @@ static void test_nodes_and_edges(void** state) {
     o3d_pose_graph_t* g = NULL;
     assert_int_equal(o3d_pose_graph_create(&g), O3D_OK);
     size_t n = 99;
-    assert_int_equal(o3d_pose_graph_num_nodes(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, g), O3D_OK);
     assert_int_equal(n, 0);
     assert_int_equal(o3d_pose_graph_add_node(g, NULL), O3D_OK); /* identity */
     double pose[16], out[16];
     motion_z(0.3, 1, 2, 3, pose);
     assert_int_equal(o3d_pose_graph_add_node(g, pose), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_nodes(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, g), O3D_OK);
     assert_int_equal(n, 2);
-    assert_int_equal(o3d_pose_graph_get_node(g, 0, out), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(out, g, 0), O3D_OK);
     assert_memory_equal(out, kIdentity, sizeof out);
-    assert_int_equal(o3d_pose_graph_get_node(g, 1, out), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(out, g, 1), O3D_OK);
     assert_memory_equal(out, pose, sizeof out); /* row-major in, row-major out */
     assert_int_equal(o3d_pose_graph_set_node(g, 0, pose), O3D_OK);
-    assert_int_equal(o3d_pose_graph_get_node(g, 0, out), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(out, g, 0), O3D_OK);
     assert_memory_equal(out, pose, sizeof out);
 
     o3d_pose_graph_edge_t e, back;
@@ -187,22 +187,22 @@ static void test_nodes_and_edges(void** state) {
     e.uncertain = 1;
     e.confidence = 0.25;
     assert_int_equal(o3d_pose_graph_add_edge(g, &e), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_edges(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&n, g), O3D_OK);
     assert_int_equal(n, 1);
     memset(&back, 0, sizeof back);
     back.struct_size = sizeof back;
-    assert_int_equal(o3d_pose_graph_get_edge(g, 0, &back), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_edge(&back, g, 0), O3D_OK);
     assert_memory_equal(&back, &e, sizeof e);
     e.target_node_id = 0;
     e.uncertain = 0;
     e.confidence = 1.0;
     assert_int_equal(o3d_pose_graph_set_edge(g, 0, &e), O3D_OK);
-    assert_int_equal(o3d_pose_graph_get_edge(g, 0, &back), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_edge(&back, g, 0), O3D_OK);
     assert_memory_equal(&back, &e, sizeof e);
     /* An older, shorter output struct gets only what fits. */
     memset(&back, 0x7f, sizeof back);
     back.struct_size = (uint32_t)offsetof(o3d_pose_graph_edge_t, information);
-    assert_int_equal(o3d_pose_graph_get_edge(g, 0, &back), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_edge(&back, g, 0), O3D_OK);
     assert_int_equal(back.target_node_id, 0);
     assert_int_equal(back.uncertain, 0x7f7f7f7f);
 
@@ -211,11 +211,11 @@ static void test_nodes_and_edges(void** state) {
     assert_int_equal(o3d_pose_graph_clone(&copy, g), O3D_OK);
     assert_same_graph(copy, g);
     assert_int_equal(o3d_pose_graph_clear(g), O3D_OK);
-    assert_int_equal(o3d_pose_graph_num_nodes(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, g), O3D_OK);
     assert_int_equal(n, 0);
-    assert_int_equal(o3d_pose_graph_num_edges(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&n, g), O3D_OK);
     assert_int_equal(n, 0);
-    assert_int_equal(o3d_pose_graph_num_nodes(copy, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, copy), O3D_OK);
     assert_int_equal(n, 2);
     o3d_pose_graph_destroy(copy);
     o3d_pose_graph_destroy(g);
@@ -234,18 +234,18 @@ static void test_graph_invalid_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_pose_graph_clone(NULL, g), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_clone(&out, NULL), O3D_ERROR_INVALID_ARGUMENT);
     assert_null(out);
-    O3D_ASSERT_FAILS(o3d_pose_graph_num_nodes(NULL, &n), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_num_nodes(g, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_num_edges(NULL, &n), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_num_edges(g, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_num_nodes(&n, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_num_nodes(NULL, g), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_num_edges(&n, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_num_edges(NULL, g), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_clear(NULL), O3D_ERROR_INVALID_ARGUMENT);
 
     /* Nodes: NULL, out of range, and poses that are not finite rigid transforms. */
     O3D_ASSERT_FAILS(o3d_pose_graph_add_node(NULL, kIdentity), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(NULL, 0, pose), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(g, 0, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(g, 1, pose), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(g, (size_t)-1, pose), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(pose, NULL, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(NULL, g, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(pose, g, 1), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_node(pose, g, (size_t)-1), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_node(NULL, 0, kIdentity), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_node(g, 0, NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_node(g, 1, kIdentity), O3D_ERROR_INVALID_ARGUMENT);
@@ -260,9 +260,9 @@ static void test_graph_invalid_arguments(void** state) {
         O3D_ASSERT_FAILS(o3d_pose_graph_add_node(g, bad_poses[k]), O3D_ERROR_INVALID_ARGUMENT);
         O3D_ASSERT_FAILS(o3d_pose_graph_set_node(g, 0, bad_poses[k]), O3D_ERROR_INVALID_ARGUMENT);
     }
-    assert_int_equal(o3d_pose_graph_num_nodes(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, g), O3D_OK);
     assert_int_equal(n, 1);
-    assert_int_equal(o3d_pose_graph_get_node(g, 0, pose), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(pose, g, 0), O3D_OK);
     assert_memory_equal(pose, kIdentity, sizeof pose);
 
     /* Edges: NULL, sizes, out of range, non-finite matrices, confidence outside [0, 1]. */
@@ -270,11 +270,11 @@ static void test_graph_invalid_arguments(void** state) {
     assert_int_equal(o3d_pose_graph_edge_init(&e, sizeof e), O3D_OK);
     O3D_ASSERT_FAILS(o3d_pose_graph_add_edge(NULL, &e), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_add_edge(g, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(g, 0, &e), O3D_ERROR_INVALID_ARGUMENT); /* no edges yet */
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(&e, g, 0), O3D_ERROR_INVALID_ARGUMENT); /* no edges yet */
     assert_int_equal(o3d_pose_graph_add_edge(g, &e), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(NULL, 0, &e), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(g, 0, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(g, 1, &e), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(&e, NULL, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(NULL, g, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(&e, g, 1), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_edge(NULL, 0, &e), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_edge(g, 0, NULL), O3D_ERROR_INVALID_ARGUMENT);
     O3D_ASSERT_FAILS(o3d_pose_graph_set_edge(g, 1, &e), O3D_ERROR_INVALID_ARGUMENT);
@@ -292,10 +292,10 @@ static void test_graph_invalid_arguments(void** state) {
         o3d_pose_graph_edge_t out_edge = e;
         if (which < 2) {
             out_edge.struct_size = bad.struct_size;
-            O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(g, 0, &out_edge), O3D_ERROR_INVALID_ARGUMENT);
+            O3D_ASSERT_FAILS(o3d_pose_graph_get_edge(&out_edge, g, 0), O3D_ERROR_INVALID_ARGUMENT);
         }
     }
-    assert_int_equal(o3d_pose_graph_num_edges(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&n, g), O3D_OK);
     assert_int_equal(n, 1);
     o3d_pose_graph_destroy(g);
 }
@@ -343,16 +343,16 @@ static void test_read_shared_file(void** state) {
     o3d_pose_graph_t* g = NULL;
     assert_int_equal(o3d_io_read_pose_graph(&g, path), O3D_OK);
     size_t n;
-    assert_int_equal(o3d_pose_graph_num_nodes(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_nodes(&n, g), O3D_OK);
     assert_int_equal(n, 2);
     o3d_pose_graph_edge_t e;
     e.struct_size = sizeof e;
-    assert_int_equal(o3d_pose_graph_get_edge(g, 1, &e), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_edge(&e, g, 1), O3D_OK);
     assert_int_equal(e.source_node_id, 2);
     /* Its second edge names node 2 of 2: Open3D refuses the graph, so do we, and it stays as it was. */
     o3d_pose_graph_t* before = NULL;
     assert_int_equal(o3d_pose_graph_clone(&before, g), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, NULL, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_global_optimization(NULL, g, NULL), O3D_ERROR_INVALID_ARGUMENT);
     assert_same_graph(g, before);
     o3d_pose_graph_destroy(before);
     o3d_pose_graph_destroy(g);
@@ -386,7 +386,7 @@ static double pose_error(const o3d_pose_graph_t* g) {
     double worst = 0;
     for (int i = 0; i < 8; ++i) {
         double p[16], t[16];
-        assert_int_equal(o3d_pose_graph_get_node(g, (size_t)i, p), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_node(p, g, (size_t)i), O3D_OK);
         truth(i, 8, t);
         for (int k = 0; k < 16; ++k) worst = fmax(worst, fabs(p[k] - t[k]));
     }
@@ -402,18 +402,18 @@ static void optimization_prunes_false_closure(int32_t method) {
     o3d_global_optimization_summary_t s;
     memset(&s, 0, sizeof s);
     s.struct_size = sizeof s;
-    assert_int_equal(o3d_global_optimization(g, &o, &s), O3D_OK);
+    assert_int_equal(o3d_global_optimization(&s, g, &o), O3D_OK);
     assert_int_equal(s.struct_size, sizeof s);
     assert_int_equal(s.pruned_edges, 1);
     assert_true(s.iterations > 0);
     assert_true(s.final_residual < 1e-9 * s.initial_residual);
     size_t n;
-    assert_int_equal(o3d_pose_graph_num_edges(g, &n), O3D_OK);
+    assert_int_equal(o3d_pose_graph_num_edges(&n, g), O3D_OK);
     assert_int_equal(n, 10);
     for (size_t k = 0; k < n; ++k) { /* the false closure 4 -> 1 was the last edge; the rest agree */
         o3d_pose_graph_edge_t e;
         e.struct_size = sizeof e;
-        assert_int_equal(o3d_pose_graph_get_edge(g, k, &e), O3D_OK);
+        assert_int_equal(o3d_pose_graph_get_edge(&e, g, k), O3D_OK);
         assert_false(e.source_node_id == 4 && e.target_node_id == 1);
         assert_true(e.confidence > 1.0 - 1e-6);
     }
@@ -438,16 +438,16 @@ static void test_reference_node_and_threads(void** state) {
     o3d_pose_graph_t* two = NULL;
     assert_int_equal(o3d_pose_graph_clone(&two, one), O3D_OK);
     double before[16], after[16];
-    assert_int_equal(o3d_pose_graph_get_node(one, 5, before), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(before, one, 5), O3D_OK);
     o3d_global_optimization_options_t o;
     assert_int_equal(o3d_global_optimization_options_init(&o, sizeof o), O3D_OK);
     o.reference_node = 5;
     o.num_threads = 1;
-    assert_int_equal(o3d_global_optimization(one, &o, NULL), O3D_OK);
+    assert_int_equal(o3d_global_optimization(NULL, one, &o), O3D_OK);
     o.num_threads = 3;
-    assert_int_equal(o3d_global_optimization(two, &o, NULL), O3D_OK);
+    assert_int_equal(o3d_global_optimization(NULL, two, &o), O3D_OK);
     assert_same_graph(one, two); /* bit for bit */
-    assert_int_equal(o3d_pose_graph_get_node(one, 5, after), O3D_OK);
+    assert_int_equal(o3d_pose_graph_get_node(after, one, 5), O3D_OK);
     assert_memory_equal(before, after, sizeof before);
     o3d_pose_graph_destroy(two);
     o3d_pose_graph_destroy(one);
@@ -478,13 +478,13 @@ static void test_progress_and_cancel(void** state) {
     o.user_data = &calls;
     o3d_global_optimization_summary_t s;
     s.struct_size = sizeof s;
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, &o, &s), O3D_ERROR_CANCELLED);
+    O3D_ASSERT_FAILS(o3d_global_optimization(&s, g, &o), O3D_ERROR_CANCELLED);
     assert_int_equal(calls, 2);
     assert_same_graph(g, before);
     double last = 0.0;
     o.progress = keep_going;
     o.user_data = &last;
-    assert_int_equal(o3d_global_optimization(g, &o, NULL), O3D_OK);
+    assert_int_equal(o3d_global_optimization(NULL, g, &o), O3D_OK);
     assert_true(last == 1.0);
     o3d_pose_graph_destroy(before);
     o3d_pose_graph_destroy(g);
@@ -513,14 +513,14 @@ static void test_optimization_invalid_arguments(void** state) {
         if (which == 9) o.edge_prune_threshold = 2.0;
         if (which == 10) o.reference_node = 8; /* the ring has 8 nodes */
         if (which == 11) o.num_threads = -1;
-        O3D_ASSERT_FAILS(o3d_global_optimization(g, &o, &s), O3D_ERROR_INVALID_ARGUMENT);
+        O3D_ASSERT_FAILS(o3d_global_optimization(&s, g, &o), O3D_ERROR_INVALID_ARGUMENT);
         assert_same_graph(g, before);
     }
     /* A bad summary size fails before anything is done. */
     s.struct_size = 2;
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, NULL, &s), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_global_optimization(&s, g, NULL), O3D_ERROR_INVALID_ARGUMENT);
     s.struct_size = sizeof s + 8;
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, NULL, &s), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_global_optimization(&s, g, NULL), O3D_ERROR_INVALID_ARGUMENT);
     assert_same_graph(g, before);
     /* An edge naming a missing node, on either side. */
     o3d_pose_graph_edge_t e;
@@ -530,12 +530,12 @@ static void test_optimization_invalid_arguments(void** state) {
     assert_int_equal(o3d_pose_graph_add_edge(g, &e), O3D_OK);
     o3d_pose_graph_destroy(before);
     assert_int_equal(o3d_pose_graph_clone(&before, g), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, NULL, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_global_optimization(NULL, g, NULL), O3D_ERROR_INVALID_ARGUMENT);
     assert_same_graph(g, before);
     e.source_node_id = -1;
     e.target_node_id = 0;
     assert_int_equal(o3d_pose_graph_set_edge(g, 11, &e), O3D_OK);
-    O3D_ASSERT_FAILS(o3d_global_optimization(g, NULL, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_global_optimization(NULL, g, NULL), O3D_ERROR_INVALID_ARGUMENT);
     o3d_pose_graph_destroy(before);
     o3d_pose_graph_destroy(g);
 }

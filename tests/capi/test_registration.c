@@ -36,8 +36,8 @@ static o3d_pointcloud_t* height_field(size_t n, const double motion[16]) {
     }
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_normals(pc, nrm, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, nrm, n), O3D_OK);
     free(xyz);
     free(nrm);
     return pc;
@@ -46,7 +46,7 @@ static o3d_pointcloud_t* height_field(size_t n, const double motion[16]) {
 static o3d_pointcloud_t* cloud_of(const double* xyz, size_t n) {
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, n), O3D_OK);
     return pc;
 }
 
@@ -85,14 +85,14 @@ static void icp_recovers(int32_t estimation) {
     o3d_pointcloud_destroy(source);
     o3d_pointcloud_destroy(target);
     double t[16], fitness = 0, rmse = 1;
-    assert_int_equal(o3d_registration_result_get_transformation(r, t), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_transformation(t, r), O3D_OK);
     assert_true(o3d_test_max_abs_diff16(t, m) < 1e-9);
-    assert_int_equal(o3d_registration_result_get_fitness(r, &fitness), O3D_OK);
-    assert_int_equal(o3d_registration_result_get_inlier_rmse(r, &rmse), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_fitness(&fitness, r), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_inlier_rmse(&rmse, r), O3D_OK);
     assert_true(fitness == 1.0);
     assert_true(rmse < 1e-9);
     size_t n = 0;
-    assert_int_equal(o3d_registration_result_get_correspondence_set(r, NULL, 0, &n), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_correspondence_set(NULL, 0, &n, r), O3D_OK);
     assert_int_equal(n, 3000);
     o3d_registration_result_destroy(r);
 }
@@ -148,8 +148,8 @@ static void test_icp_thread_count_does_not_change_bits(void** state) {
         o.num_threads = k + 1;
         o3d_registration_result_t* r = NULL;
         assert_int_equal(o3d_register_icp(&r, source, target, 0.1, NULL, &o), O3D_OK);
-        o3d_registration_result_get_transformation(r, t[k]);
-        o3d_registration_result_get_inlier_rmse(r, &rmse[k]);
+        o3d_registration_result_get_transformation(t[k], r);
+        o3d_registration_result_get_inlier_rmse(&rmse[k], r);
         o3d_registration_result_destroy(r);
     }
     assert_memory_equal(t[0], t[1], sizeof t[0]);
@@ -182,25 +182,25 @@ static void test_evaluate_and_correspondences(void** state) {
     o3d_registration_result_t* r = NULL;
     assert_int_equal(o3d_evaluate_registration(&r, source, target, 0.5, down), O3D_OK);
     double fitness, rmse, t[16];
-    o3d_registration_result_get_fitness(r, &fitness);
-    o3d_registration_result_get_inlier_rmse(r, &rmse);
-    o3d_registration_result_get_transformation(r, t);
+    o3d_registration_result_get_fitness(&fitness, r);
+    o3d_registration_result_get_inlier_rmse(&rmse, r);
+    o3d_registration_result_get_transformation(t, r);
     assert_true(fitness == 0.75);
     assert_true(fabs(rmse - sqrt((0.04 + 0.01 + 0.09) / 3.0)) < 1e-15);
     assert_memory_equal(t, down, sizeof down);
 
     size_t n = 0;
     int32_t pairs[8] = {0};
-    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(r, pairs, 2, &n), O3D_ERROR_BUFFER_TOO_SMALL);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(pairs, 2, &n, r), O3D_ERROR_BUFFER_TOO_SMALL);
     assert_int_equal(n, 3);
-    assert_int_equal(o3d_registration_result_get_correspondence_set(r, pairs, 4, &n), O3D_OK);
+    assert_int_equal(o3d_registration_result_get_correspondence_set(pairs, 4, &n, r), O3D_OK);
     const int32_t expected[6] = {0, 0, 1, 1, 3, 2};
     assert_memory_equal(pairs, expected, sizeof expected);
     o3d_registration_result_destroy(r);
 
     /* NULL transformation means identity: only the first two source points pair. */
     assert_int_equal(o3d_evaluate_registration(&r, source, target, 0.5, NULL), O3D_OK);
-    o3d_registration_result_get_fitness(r, &fitness);
+    o3d_registration_result_get_fitness(&fitness, r);
     assert_true(fitness == 0.5);
     o3d_registration_result_destroy(r);
     o3d_pointcloud_destroy(source);
@@ -214,7 +214,7 @@ static void test_information_matrix(void** state) {
     o3d_pointcloud_t* target = cloud_of(tgt, 2);
     o3d_pointcloud_t* source = cloud_of(src, 2);
     double info[36];
-    assert_int_equal(o3d_get_information_matrix_from_point_clouds(source, target, 0.1, NULL, info), O3D_OK);
+    assert_int_equal(o3d_get_information_matrix_from_point_clouds(info, source, target, 0.1, NULL), O3D_OK);
     /* One pair, q = (0.5, -1, 2): G = [-[q]x | I], info = G^T G. */
     const double x = 0.5, y = -1.0, z = 2.0;
     const double expected[36] = {y * y + z * z, -x * y, -x * z, 0, -z, y,
@@ -276,29 +276,29 @@ static void test_invalid_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_evaluate_registration(&r, pc, pc, 0.1, bad_init), O3D_ERROR_INVALID_ARGUMENT);
     assert_null(r);
 
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(NULL, pc, 0.1, NULL, info),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(info, NULL, pc, 0.1, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(pc, NULL, 0.1, NULL, info),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(info, pc, NULL, 0.1, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(pc, pc, 0.1, NULL, NULL),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(NULL, pc, pc, 0.1, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(pc, empty, 0.1, NULL, info),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(info, pc, empty, 0.1, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(pc, pc, -2.0, NULL, info),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(info, pc, pc, -2.0, NULL),
                      O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(pc, pc, 0.1, bad_init, info),
+    O3D_ASSERT_FAILS(o3d_get_information_matrix_from_point_clouds(info, pc, pc, 0.1, bad_init),
                      O3D_ERROR_INVALID_ARGUMENT);
 
     assert_int_equal(o3d_evaluate_registration(&r, pc, pc, 0.1, NULL), O3D_OK);
     size_t n;
-    O3D_ASSERT_FAILS(o3d_registration_result_get_transformation(NULL, t), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_transformation(r, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_fitness(NULL, &d), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_fitness(r, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_inlier_rmse(NULL, &d), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_inlier_rmse(r, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(NULL, NULL, 0, &n), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(r, NULL, 0, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_transformation(t, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_transformation(NULL, r), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_fitness(&d, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_fitness(NULL, r), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_inlier_rmse(&d, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_inlier_rmse(NULL, r), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(NULL, 0, &n, NULL), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_registration_result_get_correspondence_set(NULL, 0, NULL, r), O3D_ERROR_INVALID_ARGUMENT);
     o3d_registration_result_destroy(r);
     o3d_registration_result_destroy(NULL);
     o3d_pointcloud_destroy(empty);

@@ -26,7 +26,7 @@ static o3d_image_t* make_image(int w, int h, int channels, int bytes, const void
 static float float_at(const o3d_image_t* image, int index) {
     const uint8_t* data = NULL;
     size_t size = 0;
-    assert_int_equal(o3d_image_data_view(image, &data, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_view(&data, &size, image, O3D_IMAGE_DATA), O3D_OK);
     assert_true((size_t)(index + 1) * 4 <= size);
     float v;
     memcpy(&v, data + 4 * index, 4);
@@ -66,8 +66,8 @@ static void test_color_and_depth(void** state) {
     const float expected[6] = {0.0f, 1.0f, 2999.0f / 1000.0f, 0.0f, 0.0f, 1.5f};
     for (int i = 0; i < 6; ++i) assert_true(float_at(d, i) == expected[i]);
     int32_t channels = 0, bytes = 0;
-    assert_int_equal(o3d_image_num_channels(c, &channels), O3D_OK);
-    assert_int_equal(o3d_image_bytes_per_channel(c, &bytes), O3D_OK);
+    assert_int_equal(o3d_image_num_channels(&channels, c), O3D_OK);
+    assert_int_equal(o3d_image_bytes_per_channel(&bytes, c), O3D_OK);
     assert_int_equal(channels, 1);
     assert_int_equal(bytes, 4);
     for (int i = 0; i < 6; ++i)
@@ -84,7 +84,7 @@ static void test_color_and_depth(void** state) {
     opts.convert_rgb_to_intensity = 0; /* beyond struct_size: not read */
     assert_int_equal(o3d_rgbd_image_create_from_color_and_depth(&rgbd, color, depth, &opts), O3D_OK);
     assert_int_equal(o3d_rgbd_image_get_color(&c, rgbd), O3D_OK);
-    assert_int_equal(o3d_image_num_channels(c, &channels), O3D_OK);
+    assert_int_equal(o3d_image_num_channels(&channels, c), O3D_OK);
     assert_int_equal(channels, 1);
     o3d_image_destroy(c);
     o3d_rgbd_image_destroy(rgbd);
@@ -99,7 +99,7 @@ static void test_color_and_depth(void** state) {
     assert_int_equal(o3d_rgbd_image_get_color(&c, rgbd), O3D_OK);
     const uint8_t* data = NULL;
     size_t size = 0;
-    assert_int_equal(o3d_image_data_view(c, &data, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_view(&data, &size, c, O3D_IMAGE_DATA), O3D_OK);
     assert_int_equal(size, 18);
     assert_memory_equal(data, rgb, 18);
     o3d_image_destroy(d);
@@ -153,7 +153,7 @@ static void test_dataset_formats(void** state) {
     /* The caller's depth image is untouched. */
     const uint8_t* data = NULL;
     size_t size = 0;
-    assert_int_equal(o3d_image_data_view(depth, &data, &size), O3D_OK);
+    assert_int_equal(o3d_image_array_view(&data, &size, depth, O3D_IMAGE_DATA), O3D_OK);
     assert_memory_equal(data, raw, sizeof raw);
 
     assert_int_equal(o3d_rgbd_image_create_from_dataset_format(&rgbd, O3D_RGBD_FORMAT_TUM, color, depth, 1), O3D_OK);
@@ -190,7 +190,7 @@ static void test_back_projection_synthetic(void** state) {
     assert_int_equal(o3d_pointcloud_create_from_depth_image(&pc, depth, &kIntrinsic, extrinsic, NULL), O3D_OK);
     size_t n = 0;
     const double* xyz = NULL;
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 10);
     size_t k = 0;
     for (int v = 0; v < 3; ++v)
@@ -215,7 +215,7 @@ static void test_back_projection_synthetic(void** state) {
     opts.depth_trunc = 4.75;
     opts.project_valid_depth_only = 0;
     assert_int_equal(o3d_pointcloud_create_from_depth_image(&pc, depth, &kIntrinsic, NULL, &opts), O3D_OK);
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 4);
     assert_true(xyz[0] == (0 - 1.5) * 1.0 / 2.0 && xyz[1] == (0 - 0.75) * 1.0 / 2.5 && xyz[2] == 1.0);
     assert_true(xyz[3] == (2 - 1.5) * 1.5 / 2.0 && xyz[5] == 1.5);
@@ -259,7 +259,7 @@ static void test_back_projection_synthetic(void** state) {
                      O3D_ERROR_INVALID_ARGUMENT);
     assert_int_equal(o3d_pointcloud_create_from_rgbd_image(&pc, rgbd, &kIntrinsic, NULL, 1), O3D_OK);
     int32_t has = 0;
-    assert_int_equal(o3d_pointcloud_has_colors(pc, &has), O3D_OK);
+    assert_int_equal(o3d_pointcloud_has_array(&has, pc, O3D_POINTCLOUD_COLORS), O3D_OK);
     assert_int_equal(has, 1);
     o3d_pointcloud_destroy(pc);
     o3d_rgbd_image_destroy(rgbd);
@@ -290,8 +290,8 @@ static void test_back_projection_real_frame(void** state) {
     size_t n = 0, nc = 0;
     const double* xyz = NULL;
     const double* rgb = NULL;
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
-    assert_int_equal(o3d_pointcloud_colors_view(pc, &rgb, &nc), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&rgb, &nc, pc, O3D_POINTCLOUD_COLORS), O3D_OK);
     assert_int_equal(n, 267129);
     assert_int_equal(nc, n);
     const double centroid[3] = {-0.04790395589573783, -0.05202429268729524, 1.793887336424306};
@@ -314,7 +314,7 @@ static void test_back_projection_real_frame(void** state) {
 
     /* Organised: every pixel, NaN where the depth is 0 (Open3D: rgbd_organised_count, 40071 NaN). */
     assert_int_equal(o3d_pointcloud_create_from_rgbd_image(&pc, rgbd, &ps, NULL, 0), O3D_OK);
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 307200);
     size_t nan_count = 0;
     for (size_t i = 0; i < n; ++i) nan_count += isnan(xyz[3 * i]) ? 1 : 0;
@@ -323,7 +323,7 @@ static void test_back_projection_real_frame(void** state) {
 
     /* The raw depth PNG directly: Open3D's depth_count and depth_point[123456]. */
     assert_int_equal(o3d_pointcloud_create_from_depth_image(&pc, depth, &ps, NULL, NULL), O3D_OK);
-    assert_int_equal(o3d_pointcloud_points_view(pc, &xyz, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&xyz, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 267129);
     const double p123456[3] = {0.043559999465942384, -0.04770857084365118, 2.177999973297119};
     for (int r = 0; r < 3; ++r) assert_true(fabs(xyz[3 * 123456 + r] - p123456[r]) < 1e-15);

@@ -26,14 +26,14 @@ typedef struct {
 
 static arrays copy_out(const o3d_trianglemesh_t* m) {
     arrays a;
-    assert_int_equal(o3d_trianglemesh_num_vertices(m, &a.nv), O3D_OK);
-    assert_int_equal(o3d_trianglemesh_num_triangles(m, &a.nt), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_vertices(&a.nv, m), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&a.nt, m), O3D_OK);
     a.v = malloc(3 * a.nv * sizeof(double));
     a.t = malloc(3 * a.nt * sizeof(int32_t));
     size_t rows = 0;
-    assert_int_equal(o3d_trianglemesh_get_array(m, O3D_MESH_VERTICES, a.v, a.nv, &rows), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_array(a.v, a.nv, &rows, m, O3D_MESH_VERTICES), O3D_OK);
     assert_int_equal(rows, a.nv);
-    assert_int_equal(o3d_trianglemesh_get_index_array(m, O3D_MESH_TRIANGLES, a.t, a.nt, &rows), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_index_array(a.t, a.nt, &rows, m, O3D_MESH_TRIANGLES), O3D_OK);
     assert_int_equal(rows, a.nt);
     return a;
 }
@@ -95,9 +95,9 @@ static void test_counts_areas_volumes(void** state) {
     const double origin[3] = {1, 2, 3};
     assert_int_equal(o3d_trianglemesh_create_coordinate_frame(&m, 2, origin), O3D_OK);
     int32_t has = 0;
-    assert_int_equal(o3d_trianglemesh_has_array(m, O3D_MESH_VERTEX_COLORS, &has), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_has_array(&has, m, O3D_MESH_VERTEX_COLORS), O3D_OK);
     assert_int_equal(has, 1);
-    assert_int_equal(o3d_trianglemesh_has_array(m, O3D_MESH_VERTEX_NORMALS, &has), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_has_array(&has, m, O3D_MESH_VERTEX_NORMALS), O3D_OK);
     assert_int_equal(has, 1);
     check(m, 1134, 2240, 2.9767455943032073, -1, 1e-9);
     assert_int_equal(o3d_trianglemesh_create_coordinate_frame(&m, 1, NULL), O3D_OK); /* NULL origin: 0, 0, 0 */

@@ -42,13 +42,13 @@ static o3d_trianglemesh_t* make_tetrahedron(void) {
 
 static size_t triangles_of(const o3d_trianglemesh_t* m) {
     size_t n = 0;
-    assert_int_equal(o3d_trianglemesh_num_triangles(m, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_triangles(&n, m), O3D_OK);
     return n;
 }
 
 static size_t vertices_of(const o3d_trianglemesh_t* m) {
     size_t n = 0;
-    assert_int_equal(o3d_trianglemesh_num_vertices(m, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_num_vertices(&n, m), O3D_OK);
     return n;
 }
 
@@ -56,8 +56,8 @@ static double area_of(const o3d_trianglemesh_t* m) {
     const double* v = NULL;
     const int32_t* t = NULL;
     size_t nv = 0, nt = 0;
-    assert_int_equal(o3d_trianglemesh_array_view(m, O3D_MESH_VERTICES, &v, &nv), O3D_OK);
-    assert_int_equal(o3d_trianglemesh_index_array_view(m, O3D_MESH_TRIANGLES, &t, &nt), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_array_view(&v, &nv, m, O3D_MESH_VERTICES), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_index_array_view(&t, &nt, m, O3D_MESH_TRIANGLES), O3D_OK);
     double area = 0;
     for (size_t i = 0; i < nt; ++i) {
         const double* a = v + 3 * t[3 * i];
@@ -78,10 +78,10 @@ static void test_sampling(void** state) {
     size_t n = 0;
     const double* p = NULL;
     const double* c = NULL;
-    assert_int_equal(o3d_pointcloud_points_view(pc, &p, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&p, &n, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_int_equal(n, 1000);
     size_t nc = 0;
-    assert_int_equal(o3d_pointcloud_colors_view(pc, &c, &nc), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&c, &nc, pc, O3D_POINTCLOUD_COLORS), O3D_OK);
     assert_int_equal(nc, 1000);
     for (size_t i = 0; i < n; ++i) {
         assert_true(p[3 * i] >= 0 && p[3 * i] <= 1 && p[3 * i + 1] >= 0 && p[3 * i + 1] <= 1);
@@ -92,14 +92,14 @@ static void test_sampling(void** state) {
     o3d_pointcloud_t* again = NULL;
     assert_int_equal(o3d_trianglemesh_sample_points_uniformly(&again, m, 1000, 1, 5), O3D_OK);
     const double* q = NULL;
-    assert_int_equal(o3d_pointcloud_points_view(again, &q, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_array_view(&q, &n, again, O3D_POINTCLOUD_POINTS), O3D_OK);
     assert_memory_equal(p, q, 3000 * sizeof(double));
     o3d_pointcloud_destroy(again);
     o3d_pointcloud_destroy(pc);
 
     pc = NULL;
     assert_int_equal(o3d_trianglemesh_sample_points_poisson_disk(&pc, m, 50, 5.0, 0, 1), O3D_OK);
-    assert_int_equal(o3d_pointcloud_size(pc, &n), O3D_OK);
+    assert_int_equal(o3d_pointcloud_size(&n, pc), O3D_OK);
     assert_int_equal(n, 50);
     o3d_pointcloud_destroy(pc);
 
@@ -130,7 +130,7 @@ static void test_simplification(void** state) {
     assert_int_equal(triangles_of(out), 0);
     double centre[3];
     size_t rows = 0;
-    assert_int_equal(o3d_trianglemesh_get_array(out, O3D_MESH_VERTICES, centre, 1, &rows), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_get_array(centre, 1, &rows, out, O3D_MESH_VERTICES), O3D_OK);
     assert_true(fabs(centre[0]) < 1e-12 && fabs(centre[1]) < 1e-12 && fabs(centre[2]) < 1e-12);
     o3d_trianglemesh_destroy(out);
 
@@ -169,7 +169,7 @@ static void test_smoothing(void** state) {
     assert_int_equal(o3d_trianglemesh_filter_smooth_laplacian(&out, m, 5, 0.5, O3D_FILTER_SCOPE_ALL), O3D_OK);
     const double* v = NULL;
     size_t n = 0;
-    assert_int_equal(o3d_trianglemesh_array_view(out, O3D_MESH_VERTICES, &v, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_array_view(&v, &n, out, O3D_MESH_VERTICES), O3D_OK);
     assert_int_equal(n, 4);
     for (size_t i = 0; i < n; ++i) assert_true(v[3 * i + 2] == 0.0);
     o3d_trianglemesh_destroy(out);
@@ -178,8 +178,8 @@ static void test_smoothing(void** state) {
     /* Colors only: positions untouched. */
     assert_int_equal(o3d_trianglemesh_filter_smooth_simple(&out, m, 1, O3D_FILTER_SCOPE_COLOR), O3D_OK);
     const double* orig = NULL;
-    assert_int_equal(o3d_trianglemesh_array_view(out, O3D_MESH_VERTICES, &v, &n), O3D_OK);
-    assert_int_equal(o3d_trianglemesh_array_view(m, O3D_MESH_VERTICES, &orig, &n), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_array_view(&v, &n, out, O3D_MESH_VERTICES), O3D_OK);
+    assert_int_equal(o3d_trianglemesh_array_view(&orig, &n, m, O3D_MESH_VERTICES), O3D_OK);
     assert_memory_equal(v, orig, 12 * sizeof(double));
     o3d_trianglemesh_destroy(out);
 

@@ -28,7 +28,7 @@ static void test_round_trip_through_utf8_path(void** state) {
     const double xyz[] = {0, 0, 0, 1, 2, 3, -4.5, 0.25, 8};
     o3d_pointcloud_t* pc = NULL;
     assert_int_equal(o3d_pointcloud_create(&pc), O3D_OK);
-    assert_int_equal(o3d_pointcloud_set_points(pc, xyz, 3), O3D_OK);
+    assert_int_equal(o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, xyz, 3), O3D_OK);
     assert_int_equal(o3d_io_write_point_cloud(ply, pc, NULL, NULL), O3D_OK);
     assert_int_equal(o3d_io_write_point_cloud(pcd, pc, NULL, NULL), O3D_OK);
 
@@ -38,7 +38,7 @@ static void test_round_trip_through_utf8_path(void** state) {
         assert_int_equal(o3d_io_read_point_cloud(&back, paths[i], NULL, NULL), O3D_OK);
         double out[9];
         size_t n = 0;
-        assert_int_equal(o3d_pointcloud_get_points(back, out, 3, &n), O3D_OK);
+        assert_int_equal(o3d_pointcloud_get_array(out, 3, &n, back, O3D_POINTCLOUD_POINTS), O3D_OK);
         assert_int_equal(n, 3);
         for (int k = 0; k < 9; ++k) assert_float_equal(out[k], xyz[k], 1e-6);
         o3d_pointcloud_destroy(back);

@@ -41,7 +41,7 @@ TEST(Error, BufferTooSmallThroughCheck) {
     o3dpp::PointCloud pc(o3dpp_test::random_points(5));
     double out[3 * 2];
     size_t n = 0;
-    EXPECT_O3D_ERROR(o3dpp::check(o3d_pointcloud_get_points(pc.get(), out, 2, &n)), O3D_ERROR_BUFFER_TOO_SMALL);
+    EXPECT_O3D_ERROR(o3dpp::check(o3d_pointcloud_get_array(out, 2, &n, pc.get(), O3D_POINTCLOUD_POINTS)), O3D_ERROR_BUFFER_TOO_SMALL);
     EXPECT_EQ(n, 5u);
 }
 

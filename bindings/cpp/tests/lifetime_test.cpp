@@ -45,7 +45,7 @@ TEST(Lifetime, ReleaseHandsOwnershipToTheCaller) {
     o3d_pointcloud_t* raw = a.release();
     EXPECT_EQ(a.get(), nullptr);
     size_t n = 0;
-    ASSERT_EQ(o3d_pointcloud_size(raw, &n), O3D_OK);
+    ASSERT_EQ(o3d_pointcloud_size(&n, raw), O3D_OK);
     EXPECT_EQ(n, 1u);
     o3dpp::PointCloud again(raw);  // adopt it back; destroyed once at scope end
     EXPECT_EQ(again.size(), 1u);

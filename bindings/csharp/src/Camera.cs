@@ -115,7 +115,7 @@ namespace O3d
         /// <summary>Number of poses.</summary>
         public long Count
         {
-            get { ulong n; O3dNative.o3d_camera_trajectory_size(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_camera_trajectory_size(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         /// <summary>Pose <paramref name="index"/> (out of range: O3dException InvalidArgument).</summary>
@@ -127,7 +127,7 @@ namespace O3d
                 var extrinsic = new double[16];
                 using (var n = new o3d_pinhole_intrinsic_t())
                 {
-                    O3dNative.o3d_camera_trajectory_get(Handle, (ulong)index, n, extrinsic);
+                    O3dNative.o3d_camera_trajectory_get(n, extrinsic, Handle, (ulong)index);
                     GC.KeepAlive(this);
                     return new PinholeCameraParameters(PinholeCameraIntrinsic.FromNative(n), extrinsic);
                 }

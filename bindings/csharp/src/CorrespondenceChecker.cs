@@ -69,8 +69,8 @@ namespace O3d
             ulong n = Checks.Pairs(corres, "corres");
             int passed;
             using (var c = ToNative())
-                O3dNative.o3d_correspondence_checker_check(c, source.Handle, target.Handle, corres, n,
-                                                           Checks.Fixed(transformation, 16, "transformation", true), out passed);
+                O3dNative.o3d_correspondence_checker_check(out passed, c, source.Handle, target.Handle, corres, n,
+                                                           Checks.Fixed(transformation, 16, "transformation", true));
             GC.KeepAlive(source); GC.KeepAlive(target);
             return passed != 0;
         }

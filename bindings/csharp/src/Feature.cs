@@ -48,10 +48,10 @@ namespace O3d
         }
 
         /// <summary>Descriptor length (33 for FPFH).</summary>
-        public long Dimension { get { ulong v; O3dNative.o3d_feature_dimension(Handle, out v); GC.KeepAlive(this); return (long)v; } }
+        public long Dimension { get { ulong v; O3dNative.o3d_feature_dimension(out v, Handle); GC.KeepAlive(this); return (long)v; } }
 
         /// <summary>Number of descriptors (points).</summary>
-        public long Num { get { ulong v; O3dNative.o3d_feature_num(Handle, out v); GC.KeepAlive(this); return (long)v; } }
+        public long Num { get { ulong v; O3dNative.o3d_feature_num(out v, Handle); GC.KeepAlive(this); return (long)v; } }
 
         /// <summary>
         /// All Dimension * Num values, descriptor by descriptor (a copy). Setting copies the array in; its
@@ -62,7 +62,7 @@ namespace O3d
             get
             {
                 var values = new double[checked(Dimension * Num)];
-                O3dNative.o3d_feature_get_data(Handle, values, (ulong)values.Length);
+                O3dNative.o3d_feature_get_data(values, (ulong)values.Length, Handle);
                 GC.KeepAlive(this);
                 return values;
             }
@@ -85,7 +85,7 @@ namespace O3d
         public IntPtr DataView()
         {
             IntPtr view;
-            O3dNative.o3d_feature_data(Handle, out view);
+            O3dNative.o3d_feature_data(out view, Handle);
             GC.KeepAlive(this);
             return view;
         }
@@ -137,8 +137,9 @@ namespace O3d
             if (target == null) throw new ArgumentNullException("target");
             var pairs = new int[checked(2 * source.Num)];
             ulong n;
-            O3dNative.o3d_correspondences_from_features(source.Handle, target.Handle, mutualFilter ? 1 : 0, mutualConsistencyRatio,
-                                                        numThreads, pairs, (ulong)(pairs.Length / 2), out n);
+            O3dNative.o3d_correspondences_from_features(pairs, (ulong)(pairs.Length / 2), out n, source.Handle,
+                                                        target.Handle, mutualFilter ? 1 : 0, mutualConsistencyRatio,
+                                                        numThreads);
             GC.KeepAlive(source); GC.KeepAlive(target);
             return Checks.Trim(pairs, 2 * n);
         }

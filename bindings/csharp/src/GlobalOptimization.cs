@@ -128,7 +128,7 @@ namespace O3d
                 summary.struct_size = O3dNative.o3dx_sizeof_global_optimization_summary();
                 using (var progress = new ProgressBridge(options.Progress))
                 using (var o = options.ToNative(progress))
-                    O3dNative.o3d_global_optimization(graph.Handle, o, summary);
+                    O3dNative.o3d_global_optimization(summary, graph.Handle, o);
                 GC.KeepAlive(graph);
                 return new GlobalOptimizationSummary(summary);
             }

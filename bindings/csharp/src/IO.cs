@@ -14,7 +14,7 @@ namespace O3d
         {
             IntPtr data;
             ulong n;
-            O3dNative.o3d_buffer_view(Handle, out data, out n);
+            O3dNative.o3d_buffer_view(out data, out n, Handle);
             GC.KeepAlive(this);
             size = (long)n;
             return data;
@@ -25,9 +25,9 @@ namespace O3d
         {
             IntPtr h = Handle;
             ulong n;
-            O3dNative.o3d_buffer_get_data(h, null, 0, out n);
+            O3dNative.o3d_buffer_get_data(null, 0, out n, h);
             var bytes = new byte[n];
-            O3dNative.o3d_buffer_get_data(h, bytes, n, out n);
+            O3dNative.o3d_buffer_get_data(bytes, n, out n, h);
             GC.KeepAlive(this);
             return bytes;
         }

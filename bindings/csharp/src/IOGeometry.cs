@@ -140,7 +140,7 @@ namespace O3d
             if (path == null) throw new ArgumentNullException("path");
             using (var n = new o3d_pinhole_intrinsic_t())
             {
-                O3dNative.o3d_io_read_pinhole_camera_intrinsic(path, n);
+                O3dNative.o3d_io_read_pinhole_camera_intrinsic(n, path);
                 return PinholeCameraIntrinsic.FromNative(n);
             }
         }
@@ -158,7 +158,7 @@ namespace O3d
             var extrinsic = new double[16];
             using (var n = new o3d_pinhole_intrinsic_t())
             {
-                O3dNative.o3d_io_read_pinhole_camera_parameters(path, n, extrinsic);
+                O3dNative.o3d_io_read_pinhole_camera_parameters(n, extrinsic, path);
                 return new PinholeCameraParameters(PinholeCameraIntrinsic.FromNative(n), extrinsic);
             }
         }

@@ -92,9 +92,9 @@ namespace O3d
             {
                 IntPtr h = Handle;
                 ulong n;
-                O3dNative.o3d_image_get_data(h, null, 0, out n);
+                O3dNative.o3d_image_get_array(null, 0, out n, h, O3D_IMAGE_DATA);
                 var bytes = new byte[n];
-                O3dNative.o3d_image_get_data(h, bytes, n, out n);
+                O3dNative.o3d_image_get_array(bytes, n, out n, h, O3D_IMAGE_DATA);
                 GC.KeepAlive(this);
                 return bytes;
             }
@@ -125,7 +125,7 @@ namespace O3d
         {
             IntPtr data;
             ulong n;
-            O3dNative.o3d_image_data_view(Handle, out data, out n);
+            O3dNative.o3d_image_array_view(out data, out n, Handle, O3D_IMAGE_DATA);
             GC.KeepAlive(this);
             size = (long)n;
             return data;
@@ -135,7 +135,7 @@ namespace O3d
         {
             IntPtr data;
             ulong n;
-            O3dNative.o3d_image_data_mutable_view(Handle, out data, out n);
+            O3dNative.o3d_image_array_mutable_view(out data, out n, Handle, O3D_IMAGE_DATA);
             GC.KeepAlive(this);
             size = (long)n;
             return data;

@@ -42,7 +42,7 @@ namespace O3d
         public void GetCounts(out long numQueries, out long total)
         {
             ulong q, t;
-            O3dNative.o3d_search_result_counts(Handle, out q, out t);
+            O3dNative.o3d_search_result_counts(out q, out t, Handle);
             GC.KeepAlive(this);
             numQueries = (long)q; total = (long)t;
         }
@@ -53,7 +53,7 @@ namespace O3d
         /// </summary>
         public void GetView(out IntPtr offsets, out IntPtr indices, out IntPtr distances2)
         {
-            O3dNative.o3d_search_result_view(Handle, out offsets, out indices, out distances2);
+            O3dNative.o3d_search_result_view(out offsets, out indices, out distances2, Handle);
             GC.KeepAlive(this);
         }
 
@@ -64,9 +64,9 @@ namespace O3d
             var offsets = new long[nq + 1];
             var indices = new int[total];
             var d2 = new double[total];
-            O3dNative.o3d_search_result_get_offsets(Handle, offsets, (ulong)offsets.Length);
-            O3dNative.o3d_search_result_get_indices(Handle, indices, (ulong)indices.Length);
-            O3dNative.o3d_search_result_get_distances2(Handle, d2, (ulong)d2.Length);
+            O3dNative.o3d_search_result_get_offsets(offsets, (ulong)offsets.Length, Handle);
+            O3dNative.o3d_search_result_get_indices(indices, (ulong)indices.Length, Handle);
+            O3dNative.o3d_search_result_get_distances2(d2, (ulong)d2.Length, Handle);
             GC.KeepAlive(this);
             return new NeighborResult(offsets, indices, d2);
         }
@@ -125,9 +125,9 @@ namespace O3d
         }
 
         /// <summary>Dimension of the indexed points (3 for trees over clouds).</summary>
-        public long Dimension { get { ulong d; O3dNative.o3d_kdtree_dimension(Handle, out d); GC.KeepAlive(this); return (long)d; } }
+        public long Dimension { get { ulong d; O3dNative.o3d_kdtree_dimension(out d, Handle); GC.KeepAlive(this); return (long)d; } }
 
-        public long Size { get { ulong n; O3dNative.o3d_kdtree_size(Handle, out n); GC.KeepAlive(this); return (long)n; } }
+        public long Size { get { ulong n; O3dNative.o3d_kdtree_size(out n, Handle); GC.KeepAlive(this); return (long)n; } }
 
         /// <summary>Batch search of (M x 3) queries; the caller disposes the native result.</summary>
         public SearchResult Search(double[] queries, SearchParam param, int numThreads = 0)
@@ -136,7 +136,7 @@ namespace O3d
             ulong m = Checks.Rows3(queries, "queries");
             IntPtr r;
             using (var p = param.ToNative())
-                O3dNative.o3d_kdtree_search(Handle, queries, m, p, numThreads, out r);
+                O3dNative.o3d_kdtree_search(out r, Handle, queries, m, p, numThreads);
             GC.KeepAlive(this);
             return new SearchResult(r);
         }
@@ -148,7 +148,7 @@ namespace O3d
             ulong m = Checks.Rows3(queries, "queries");
             IntPtr r;
             using (var p = param.ToNative())
-                O3dNative.o3d_kdtree_search_f32(Handle, queries, m, p, numThreads, out r);
+                O3dNative.o3d_kdtree_search_f32(out r, Handle, queries, m, p, numThreads);
             GC.KeepAlive(this);
             return new SearchResult(r);
         }
@@ -163,7 +163,7 @@ namespace O3d
                 throw new ArgumentException("queries: length " + queries.Length + " is not a multiple of the tree's dimension " + d, "queries");
             IntPtr r;
             using (var p = param.ToNative())
-                O3dNative.o3d_kdtree_search_xd(Handle, queries, (ulong)(queries.Length / d), (ulong)d, p, numThreads, out r);
+                O3dNative.o3d_kdtree_search_xd(out r, Handle, queries, (ulong)(queries.Length / d), (ulong)d, p, numThreads);
             GC.KeepAlive(this);
             return new SearchResult(r);
         }

@@ -39,21 +39,21 @@ namespace O3d
 
         public long NumPoints
         {
-            get { ulong n; O3dNative.o3d_lineset_num_points(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_lineset_num_points(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         public long NumLines
         {
-            get { ulong n; O3dNative.o3d_lineset_num_lines(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_lineset_num_lines(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         double[] GetArray(int which)
         {
             IntPtr h = Handle;
             ulong rows;
-            O3dNative.o3d_lineset_get_array(h, which, null, 0, out rows);
+            O3dNative.o3d_lineset_get_array(null, 0, out rows, h, which);
             var result = new double[checked((long)rows * 3)];
-            O3dNative.o3d_lineset_get_array(h, which, result, rows, out rows);
+            O3dNative.o3d_lineset_get_array(result, rows, out rows, h, which);
             GC.KeepAlive(this);
             return result;
         }
@@ -87,9 +87,9 @@ namespace O3d
             {
                 IntPtr h = Handle;
                 ulong rows;
-                O3dNative.o3d_lineset_get_lines(h, null, 0, out rows);
+                O3dNative.o3d_lineset_get_index_array(null, 0, out rows, h, O3D_LINESET_LINES);
                 var result = new int[checked((long)rows * 2)];
-                O3dNative.o3d_lineset_get_lines(h, result, rows, out rows);
+                O3dNative.o3d_lineset_get_index_array(result, rows, out rows, h, O3D_LINESET_LINES);
                 GC.KeepAlive(this);
                 return result;
             }
@@ -98,7 +98,7 @@ namespace O3d
                 if (value == null) throw new ArgumentNullException("value");
                 if (value.Length % 2 != 0)
                     throw new ArgumentException("value: length " + value.Length + " is not a multiple of 2", "value");
-                O3dNative.o3d_lineset_set_lines(Handle, value, (ulong)(value.Length / 2));
+                O3dNative.o3d_lineset_set_index_array(Handle, O3D_LINESET_LINES, value, (ulong)(value.Length / 2));
                 GC.KeepAlive(this);
             }
         }
@@ -110,14 +110,14 @@ namespace O3d
         IntPtr ArrayView(int which, out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_lineset_array_view(Handle, which, out data, out n);
+            O3dNative.o3d_lineset_array_view(out data, out n, Handle, which);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
         public IntPtr LinesView(out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_lineset_lines_view(Handle, out data, out n);
+            O3dNative.o3d_lineset_index_array_view(out data, out n, Handle, O3D_LINESET_LINES);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 

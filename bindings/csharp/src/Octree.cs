@@ -67,7 +67,7 @@ namespace O3d
         void Root(out double[] origin, out double size, out int maxDepth)
         {
             origin = new double[3];
-            O3dNative.o3d_octree_get_root(Handle, origin, out size, out maxDepth);
+            O3dNative.o3d_octree_get_root(origin, out size, out maxDepth, Handle);
             GC.KeepAlive(this);
         }
 
@@ -80,7 +80,7 @@ namespace O3d
         /// <summary>Number of non-empty leaves.</summary>
         public long NumLeafNodes
         {
-            get { ulong n; O3dNative.o3d_octree_num_leaf_nodes(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_octree_num_leaf_nodes(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         /// <summary>The leaf containing <paramref name="point"/>, or null outside the root or in an empty cell.</summary>
@@ -92,10 +92,10 @@ namespace O3d
             var color = new double[3];
             using (var info = new o3d_octree_node_info_t())
             {
-                O3dNative.o3d_octree_locate_leaf_node(h, p, out found, info, color, null, 0, out n); // count query
+                O3dNative.o3d_octree_locate_leaf_node(out found, info, color, null, 0, out n, h, p); // count query
                 if (found == 0) { GC.KeepAlive(this); return null; }
                 var indices = new int[n];
-                O3dNative.o3d_octree_locate_leaf_node(h, p, out found, info, color, indices, n, out n);
+                O3dNative.o3d_octree_locate_leaf_node(out found, info, color, indices, n, out n, h, p);
                 GC.KeepAlive(this);
                 var origin = new double[3];
                 O3dNative.o3dx_octree_node_info_origin(info, origin);

@@ -57,7 +57,7 @@ namespace O3d
         public double[] GetBoxPoints()
         {
             var corners = new double[24];
-            using (var b = ToNative()) O3dNative.o3d_obb_get_box_points(b, corners);
+            using (var b = ToNative()) O3dNative.o3d_obb_get_box_points(corners, b);
             return corners;
         }
 
@@ -67,7 +67,7 @@ namespace O3d
             ulong n = Checks.Rows3(points, "points");
             var indices = new int[n];
             ulong count;
-            using (var b = ToNative()) O3dNative.o3d_obb_get_point_indices_within(b, points, n, indices, n, out count);
+            using (var b = ToNative()) O3dNative.o3d_obb_get_point_indices_within(indices, n, out count, b, points, n);
             return Checks.Trim(indices, count);
         }
 

@@ -39,12 +39,12 @@ namespace O3d
         /// <summary>Number of points.</summary>
         public long Size
         {
-            get { ulong n; O3dNative.o3d_pointcloud_size(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_pointcloud_size(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
-        public bool HasPoints { get { int v; O3dNative.o3d_pointcloud_has_points(Handle, out v); GC.KeepAlive(this); return v != 0; } }
-        public bool HasNormals { get { int v; O3dNative.o3d_pointcloud_has_normals(Handle, out v); GC.KeepAlive(this); return v != 0; } }
-        public bool HasColors { get { int v; O3dNative.o3d_pointcloud_has_colors(Handle, out v); GC.KeepAlive(this); return v != 0; } }
+        public bool HasPoints { get { int v; O3dNative.o3d_pointcloud_has_array(out v, Handle, O3D_POINTCLOUD_POINTS); GC.KeepAlive(this); return v != 0; } }
+        public bool HasNormals { get { int v; O3dNative.o3d_pointcloud_has_array(out v, Handle, O3D_POINTCLOUD_NORMALS); GC.KeepAlive(this); return v != 0; } }
+        public bool HasColors { get { int v; O3dNative.o3d_pointcloud_has_array(out v, Handle, O3D_POINTCLOUD_COLORS); GC.KeepAlive(this); return v != 0; } }
 
         /// <summary>Remove points, normals and colors.</summary>
         public void Clear() { O3dNative.o3d_pointcloud_clear(Handle); GC.KeepAlive(this); }
@@ -66,29 +66,29 @@ namespace O3d
         public double[] Points
         {
             get { return CopyOut(O3dNative.o3d_pointcloud_get_points); }
-            set { O3dNative.o3d_pointcloud_set_points(Handle, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
+            set { O3dNative.o3d_pointcloud_set_array(Handle, O3D_POINTCLOUD_POINTS, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
         }
 
         /// <summary>Normals (a copy; empty when none). Setting copies the array in.</summary>
         public double[] Normals
         {
             get { return CopyOut(O3dNative.o3d_pointcloud_get_normals); }
-            set { O3dNative.o3d_pointcloud_set_normals(Handle, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
+            set { O3dNative.o3d_pointcloud_set_array(Handle, O3D_POINTCLOUD_NORMALS, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
         }
 
         /// <summary>Colors, RGB in [0,1] (a copy; empty when none). Setting copies the array in.</summary>
         public double[] Colors
         {
             get { return CopyOut(O3dNative.o3d_pointcloud_get_colors); }
-            set { O3dNative.o3d_pointcloud_set_colors(Handle, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
+            set { O3dNative.o3d_pointcloud_set_array(Handle, O3D_POINTCLOUD_COLORS, value, Checks.Rows3(value, "value")); GC.KeepAlive(this); }
         }
 
         /// <summary>Set the points from float32 (converted in the single copy).</summary>
-        public void SetPoints(float[] xyz) { O3dNative.o3d_pointcloud_set_points_f32(Handle, xyz, Checks.Rows3(xyz, "xyz")); GC.KeepAlive(this); }
+        public void SetPoints(float[] xyz) { O3dNative.o3d_pointcloud_set_array_f32(Handle, O3D_POINTCLOUD_POINTS, xyz, Checks.Rows3(xyz, "xyz")); GC.KeepAlive(this); }
         public void SetPoints(double[] xyz) { Points = xyz; }
-        public void SetNormals(float[] xyz) { O3dNative.o3d_pointcloud_set_normals_f32(Handle, xyz, Checks.Rows3(xyz, "xyz")); GC.KeepAlive(this); }
+        public void SetNormals(float[] xyz) { O3dNative.o3d_pointcloud_set_array_f32(Handle, O3D_POINTCLOUD_NORMALS, xyz, Checks.Rows3(xyz, "xyz")); GC.KeepAlive(this); }
         public void SetNormals(double[] xyz) { Normals = xyz; }
-        public void SetColors(float[] rgb) { O3dNative.o3d_pointcloud_set_colors_f32(Handle, rgb, Checks.Rows3(rgb, "rgb")); GC.KeepAlive(this); }
+        public void SetColors(float[] rgb) { O3dNative.o3d_pointcloud_set_array_f32(Handle, O3D_POINTCLOUD_COLORS, rgb, Checks.Rows3(rgb, "rgb")); GC.KeepAlive(this); }
         public void SetColors(double[] rgb) { Colors = rgb; }
 
         // ---- borrowed views -------------------------------------------------------------------
@@ -164,7 +164,7 @@ namespace O3d
         public void GetAxisAlignedBoundingBox(out double[] min, out double[] max)
         {
             min = new double[3]; max = new double[3];
-            O3dNative.o3d_pointcloud_get_axis_aligned_bounding_box(Handle, min, max);
+            O3dNative.o3d_pointcloud_get_axis_aligned_bounding_box(min, max, Handle);
             GC.KeepAlive(this);
         }
 
@@ -260,7 +260,7 @@ namespace O3d
         {
             ulong n = (ulong)Size;
             var result = new double[n];
-            O3dNative.o3d_pointcloud_compute_nearest_neighbor_distance(Handle, result, n, out n, numThreads);
+            O3dNative.o3d_pointcloud_compute_nearest_neighbor_distance(result, n, out n, Handle, numThreads);
             GC.KeepAlive(this);
             return result;
         }
@@ -271,7 +271,7 @@ namespace O3d
             if (target == null) throw new ArgumentNullException("target");
             ulong n = (ulong)Size;
             var result = new double[n];
-            O3dNative.o3d_pointcloud_compute_point_cloud_distance(Handle, target.Handle, result, n, out n, numThreads);
+            O3dNative.o3d_pointcloud_compute_point_cloud_distance(result, n, out n, Handle, target.Handle, numThreads);
             GC.KeepAlive(target); GC.KeepAlive(this);
             return result;
         }
@@ -349,8 +349,8 @@ namespace O3d
             var plane = new double[4];
             var inliers = new int[cap];
             ulong n;
-            O3dNative.o3d_pointcloud_segment_plane(Handle, distanceThreshold, ransacN, numIterations, probability, seed,
-                                                   plane, inliers, cap, out n);
+            O3dNative.o3d_pointcloud_segment_plane(plane, inliers, cap, out n, Handle, distanceThreshold, ransacN,
+                                                   numIterations, probability, seed);
             GC.KeepAlive(this);
             return new PlaneSegmentationResult(plane, Trim(inliers, n));
         }
@@ -364,7 +364,7 @@ namespace O3d
             ulong cap = (ulong)Size;
             var labels = new int[cap];
             ulong n;
-            O3dNative.o3d_pointcloud_cluster_dbscan(Handle, eps, minPoints, labels, cap, out n);
+            O3dNative.o3d_pointcloud_cluster_dbscan(labels, cap, out n, Handle, eps, minPoints);
             GC.KeepAlive(this);
             return Trim(labels, n);
         }
@@ -375,7 +375,7 @@ namespace O3d
         {
             var mean = new double[3];
             var covariance = new double[9];
-            O3dNative.o3d_pointcloud_compute_mean_and_covariance(Handle, mean, covariance);
+            O3dNative.o3d_pointcloud_compute_mean_and_covariance(mean, covariance, Handle);
             GC.KeepAlive(this);
             return new MeanAndCovariance(mean, covariance);
         }
@@ -386,7 +386,7 @@ namespace O3d
             ulong cap = (ulong)Size;
             var result = new double[cap];
             ulong n;
-            O3dNative.o3d_pointcloud_compute_mahalanobis_distance(Handle, result, cap, out n);
+            O3dNative.o3d_pointcloud_compute_mahalanobis_distance(result, cap, out n, Handle);
             GC.KeepAlive(this);
             return result;
         }

@@ -11,7 +11,7 @@ namespace O3d
         {
             using (var b = new o3d_obb_t())
             {
-                O3dNative.o3d_pointcloud_get_oriented_bounding_box(Handle, robust ? 1 : 0, b);
+                O3dNative.o3d_pointcloud_get_oriented_bounding_box(b, Handle, robust ? 1 : 0);
                 GC.KeepAlive(this);
                 return OrientedBoundingBox.FromNative(b);
             }
@@ -39,7 +39,7 @@ namespace O3d
             ulong cap = (ulong)Size;
             var indices = new int[cap];
             IntPtr h; ulong n;
-            O3dNative.o3d_pointcloud_compute_convex_hull(out h, Handle, joggleInputs ? 1 : 0, indices, cap, out n);
+            O3dNative.o3d_pointcloud_compute_convex_hull(out h, indices, cap, out n, Handle, joggleInputs ? 1 : 0);
             GC.KeepAlive(this);
             return new ConvexHullResult(new TriangleMesh(h), Checks.Trim(indices, n));
         }
@@ -54,7 +54,7 @@ namespace O3d
             ulong cap = (ulong)Size + 1;
             var indices = new int[cap];
             IntPtr h; ulong n;
-            O3dNative.o3d_pointcloud_hidden_point_removal(out h, Handle, cam, radius, indices, cap, out n);
+            O3dNative.o3d_pointcloud_hidden_point_removal(out h, indices, cap, out n, Handle, cam, radius);
             GC.KeepAlive(this);
             return new ConvexHullResult(new TriangleMesh(h), Checks.Trim(indices, n));
         }
@@ -64,7 +64,7 @@ namespace O3d
         /// <summary>True when the cloud has one covariance per point.</summary>
         public bool HasCovariances
         {
-            get { int v; O3dNative.o3d_pointcloud_has_covariances(Handle, out v); GC.KeepAlive(this); return v != 0; }
+            get { int v; O3dNative.o3d_pointcloud_has_array(out v, Handle, O3D_POINTCLOUD_COVARIANCES); GC.KeepAlive(this); return v != 0; }
         }
 
         /// <summary>Covariances: N row-major 3x3 matrices, 9N values (a copy; setting copies in).</summary>
@@ -74,9 +74,9 @@ namespace O3d
             {
                 IntPtr h = Handle;
                 ulong n;
-                O3dNative.o3d_pointcloud_get_covariances(h, null, 0, out n);
+                O3dNative.o3d_pointcloud_get_array(null, 0, out n, h, O3D_POINTCLOUD_COVARIANCES);
                 var result = new double[checked((long)n * 9)];
-                O3dNative.o3d_pointcloud_get_covariances(h, result, n, out n);
+                O3dNative.o3d_pointcloud_get_array(result, n, out n, h, O3D_POINTCLOUD_COVARIANCES);
                 GC.KeepAlive(this);
                 return result;
             }
@@ -85,7 +85,7 @@ namespace O3d
                 if (value == null) throw new ArgumentNullException("value");
                 if (value.Length % 9 != 0)
                     throw new ArgumentException("value: length " + value.Length + " is not a multiple of 9", "value");
-                O3dNative.o3d_pointcloud_set_covariances(Handle, value, (ulong)(value.Length / 9));
+                O3dNative.o3d_pointcloud_set_array(Handle, O3D_POINTCLOUD_COVARIANCES, value, (ulong)(value.Length / 9));
                 GC.KeepAlive(this);
             }
         }
@@ -94,7 +94,7 @@ namespace O3d
         public IntPtr CovariancesView(out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_pointcloud_covariances_view(Handle, out data, out n);
+            O3dNative.o3d_pointcloud_array_view(out data, out n, Handle, O3D_POINTCLOUD_COVARIANCES);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
@@ -116,7 +116,7 @@ namespace O3d
         {
             using (var b = new o3d_obb_t())
             {
-                O3dNative.o3d_trianglemesh_get_oriented_bounding_box(Handle, robust ? 1 : 0, b);
+                O3dNative.o3d_trianglemesh_get_oriented_bounding_box(b, Handle, robust ? 1 : 0);
                 GC.KeepAlive(this);
                 return OrientedBoundingBox.FromNative(b);
             }
@@ -138,7 +138,7 @@ namespace O3d
             ulong cap = (ulong)NumVertices;
             var indices = new int[cap];
             IntPtr h; ulong n;
-            O3dNative.o3d_trianglemesh_compute_convex_hull(out h, Handle, joggleInputs ? 1 : 0, indices, cap, out n);
+            O3dNative.o3d_trianglemesh_compute_convex_hull(out h, indices, cap, out n, Handle, joggleInputs ? 1 : 0);
             GC.KeepAlive(this);
             return new ConvexHullResult(new TriangleMesh(h), Checks.Trim(indices, n));
         }

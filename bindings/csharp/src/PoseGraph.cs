@@ -70,7 +70,7 @@ namespace O3d
         {
             using (var e = NewNative())
             {
-                O3dNative.o3d_pose_graph_get_edge(graph, index, e);
+                O3dNative.o3d_pose_graph_get_edge(e, graph, index);
                 var m = new double[52];
                 O3dNative.o3dx_pose_graph_edge_get_matrices(e, m);
                 return new PoseGraphEdge(e.source_node_id, e.target_node_id, Slice(m, 0, 16), Slice(m, 16, 36), e.uncertain != 0, e.confidence);
@@ -111,8 +111,8 @@ namespace O3d
             return new PoseGraph(h);
         }
 
-        public long NodeCount { get { ulong n; O3dNative.o3d_pose_graph_num_nodes(Handle, out n); GC.KeepAlive(this); return (long)n; } }
-        public long EdgeCount { get { ulong n; O3dNative.o3d_pose_graph_num_edges(Handle, out n); GC.KeepAlive(this); return (long)n; } }
+        public long NodeCount { get { ulong n; O3dNative.o3d_pose_graph_num_nodes(out n, Handle); GC.KeepAlive(this); return (long)n; } }
+        public long EdgeCount { get { ulong n; O3dNative.o3d_pose_graph_num_edges(out n, Handle); GC.KeepAlive(this); return (long)n; } }
 
         /// <summary>Append a node (PoseGraphNode) with <paramref name="pose"/> (null: identity), a finite rigid transform.</summary>
         public void AddNode(double[] pose = null)
@@ -125,7 +125,7 @@ namespace O3d
         public double[] GetNode(long index)
         {
             var pose = new double[16];
-            O3dNative.o3d_pose_graph_get_node(Handle, Checks.Count(index, "index"), pose);
+            O3dNative.o3d_pose_graph_get_node(pose, Handle, Checks.Count(index, "index"));
             GC.KeepAlive(this);
             return pose;
         }

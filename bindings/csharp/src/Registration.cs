@@ -103,14 +103,14 @@ namespace O3d
             {
                 var res = new RegistrationResult();
                 var t = new double[16];
-                O3dNative.o3d_registration_result_get_transformation(r, t);
+                O3dNative.o3d_registration_result_get_transformation(t, r);
                 double fitness, rmse;
-                O3dNative.o3d_registration_result_get_fitness(r, out fitness);
-                O3dNative.o3d_registration_result_get_inlier_rmse(r, out rmse);
+                O3dNative.o3d_registration_result_get_fitness(out fitness, r);
+                O3dNative.o3d_registration_result_get_inlier_rmse(out rmse, r);
                 ulong n;
-                O3dNative.o3d_registration_result_get_correspondence_set(r, null, 0, out n);
+                O3dNative.o3d_registration_result_get_correspondence_set(null, 0, out n, r);
                 var pairs = new int[checked((long)n * 2)];
-                O3dNative.o3d_registration_result_get_correspondence_set(r, pairs, n, out n);
+                O3dNative.o3d_registration_result_get_correspondence_set(pairs, n, out n, r);
                 res.Transformation = t;
                 res.Fitness = fitness;
                 res.InlierRmse = rmse;
@@ -195,8 +195,9 @@ namespace O3d
             if (source == null) throw new ArgumentNullException("source");
             if (target == null) throw new ArgumentNullException("target");
             var m = new double[36];
-            O3dNative.o3d_get_information_matrix_from_point_clouds(source.Handle, target.Handle, maxCorrespondenceDistance,
-                                                                   Checks.Fixed(transformation, 16, "transformation", false), m);
+            O3dNative.o3d_get_information_matrix_from_point_clouds(m, source.Handle, target.Handle,
+                                                                   maxCorrespondenceDistance,
+                                                                   Checks.Fixed(transformation, 16, "transformation", false));
             GC.KeepAlive(source); GC.KeepAlive(target);
             return m;
         }

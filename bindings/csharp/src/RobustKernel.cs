@@ -42,7 +42,7 @@ namespace O3d
         public double Weight(double residual)
         {
             double w;
-            O3dNative.o3d_robust_kernel_weight((int)Kind, K, residual, out w);
+            O3dNative.o3d_robust_kernel_weight(out w, (int)Kind, K, residual);
             return w;
         }
 

@@ -95,15 +95,15 @@ namespace O3d
 
         public long NumVertices
         {
-            get { ulong n; O3dNative.o3d_trianglemesh_num_vertices(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_trianglemesh_num_vertices(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         public long NumTriangles
         {
-            get { ulong n; O3dNative.o3d_trianglemesh_num_triangles(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_trianglemesh_num_triangles(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
-        bool Has(int which) { var v = new int[1]; O3dNative.o3d_trianglemesh_has_array(Handle, which, v); GC.KeepAlive(this); return v[0] != 0; }
+        bool Has(int which) { var v = new int[1]; O3dNative.o3d_trianglemesh_has_array(v, Handle, which); GC.KeepAlive(this); return v[0] != 0; }
 
         public bool HasVertices { get { return Has(O3dNative.O3D_MESH_VERTICES); } }
         public bool HasVertexNormals { get { return Has(O3dNative.O3D_MESH_VERTEX_NORMALS); } }
@@ -120,9 +120,9 @@ namespace O3d
         {
             IntPtr h = Handle;
             ulong rows;
-            O3dNative.o3d_trianglemesh_get_array(h, which, null, 0, out rows);
+            O3dNative.o3d_trianglemesh_get_array(null, 0, out rows, h, which);
             var result = new double[checked((long)rows * columns)];
-            O3dNative.o3d_trianglemesh_get_array(h, which, result, rows, out rows);
+            O3dNative.o3d_trianglemesh_get_array(result, rows, out rows, h, which);
             GC.KeepAlive(this);
             return result;
         }
@@ -140,9 +140,9 @@ namespace O3d
         {
             IntPtr h = Handle;
             ulong rows;
-            O3dNative.o3d_trianglemesh_get_index_array(h, which, null, 0, out rows);
+            O3dNative.o3d_trianglemesh_get_index_array(null, 0, out rows, h, which);
             var result = new int[checked((long)rows * columns)];
-            O3dNative.o3d_trianglemesh_get_index_array(h, which, result, rows, out rows);
+            O3dNative.o3d_trianglemesh_get_index_array(result, rows, out rows, h, which);
             GC.KeepAlive(this);
             return result;
         }
@@ -209,28 +209,28 @@ namespace O3d
         public IntPtr ArrayView(MeshArray which, out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_trianglemesh_array_view(Handle, (int)which, out data, out n);
+            O3dNative.o3d_trianglemesh_array_view(out data, out n, Handle, (int)which);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
         public IntPtr ArrayMutableView(MeshArray which, out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_trianglemesh_array_mutable_view(Handle, (int)which, out data, out n);
+            O3dNative.o3d_trianglemesh_array_mutable_view(out data, out n, Handle, (int)which);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
         public IntPtr IndexArrayView(MeshIndexArray which, out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_trianglemesh_index_array_view(Handle, (int)which, out data, out n);
+            O3dNative.o3d_trianglemesh_index_array_view(out data, out n, Handle, (int)which);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
         public IntPtr IndexArrayMutableView(MeshIndexArray which, out long rows)
         {
             IntPtr data; ulong n;
-            O3dNative.o3d_trianglemesh_index_array_mutable_view(Handle, (int)which, out data, out n);
+            O3dNative.o3d_trianglemesh_index_array_mutable_view(out data, out n, Handle, (int)which);
             GC.KeepAlive(this); rows = (long)n; return data;
         }
 
@@ -238,7 +238,7 @@ namespace O3d
 
         public long TextureCount
         {
-            get { ulong n; O3dNative.o3d_trianglemesh_texture_count(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_trianglemesh_texture_count(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         /// <summary>A copy of texture <paramref name="index"/>; dispose it.</summary>

@@ -72,7 +72,7 @@ namespace O3d
         public void GetAxisAlignedBoundingBox(out double[] min, out double[] max)
         {
             min = new double[3]; max = new double[3];
-            O3dNative.o3d_trianglemesh_get_axis_aligned_bounding_box(Handle, min, max);
+            O3dNative.o3d_trianglemesh_get_axis_aligned_bounding_box(min, max, Handle);
             GC.KeepAlive(this);
         }
 
@@ -107,7 +107,7 @@ namespace O3d
         public bool IsEdgeManifold(bool allowBoundaryEdges = true)
         {
             var v = new int[1];
-            O3dNative.o3d_trianglemesh_is_edge_manifold(Handle, allowBoundaryEdges ? 1 : 0, v);
+            O3dNative.o3d_trianglemesh_is_edge_manifold(v, Handle, allowBoundaryEdges ? 1 : 0);
             GC.KeepAlive(this);
             return v[0] != 0;
         }
@@ -116,7 +116,7 @@ namespace O3d
         public long EulerPoincareCharacteristic()
         {
             var v = new long[1];
-            O3dNative.o3d_trianglemesh_euler_poincare_characteristic(Handle, v);
+            O3dNative.o3d_trianglemesh_euler_poincare_characteristic(v, Handle);
             GC.KeepAlive(this);
             return v[0];
         }
@@ -126,11 +126,11 @@ namespace O3d
         {
             IntPtr h = Handle;
             ulong m, k;
-            O3dNative.o3d_trianglemesh_cluster_connected_triangles(h, null, null, null, 0, out m, out k);
+            O3dNative.o3d_trianglemesh_cluster_connected_triangles(null, null, null, 0, out m, out k, h);
             var clusters = new int[m];
             var counts = new int[m];
             var areas = new double[m];
-            O3dNative.o3d_trianglemesh_cluster_connected_triangles(h, clusters, counts, areas, m, out m, out k);
+            O3dNative.o3d_trianglemesh_cluster_connected_triangles(clusters, counts, areas, m, out m, out k, h);
             GC.KeepAlive(this);
             Array.Resize(ref counts, (int)k);
             Array.Resize(ref areas, (int)k);

@@ -58,18 +58,18 @@ namespace O3d
 
         public double VoxelSize
         {
-            get { double v; O3dNative.o3d_voxelgrid_get_voxel_size(Handle, out v); GC.KeepAlive(this); return v; }
+            get { double v; O3dNative.o3d_voxelgrid_get_voxel_size(out v, Handle); GC.KeepAlive(this); return v; }
         }
 
         /// <summary>Corner of voxel (0,0,0).</summary>
         public double[] Origin
         {
-            get { var v = new double[3]; O3dNative.o3d_voxelgrid_get_origin(Handle, v); GC.KeepAlive(this); return v; }
+            get { var v = new double[3]; O3dNative.o3d_voxelgrid_get_origin(v, Handle); GC.KeepAlive(this); return v; }
         }
 
         public long NumVoxels
         {
-            get { ulong n; O3dNative.o3d_voxelgrid_num_voxels(Handle, out n); GC.KeepAlive(this); return (long)n; }
+            get { ulong n; O3dNative.o3d_voxelgrid_num_voxels(out n, Handle); GC.KeepAlive(this); return (long)n; }
         }
 
         /// <summary>The occupied voxels, sorted by grid index (get_voxels).</summary>
@@ -77,10 +77,10 @@ namespace O3d
         {
             IntPtr h = Handle;
             ulong n;
-            O3dNative.o3d_voxelgrid_get_voxels(h, null, null, 0, out n);
+            O3dNative.o3d_voxelgrid_get_voxels(null, null, 0, out n, h);
             var indices = new int[checked((long)n * 3)];
             var colors = new double[checked((long)n * 3)];
-            O3dNative.o3d_voxelgrid_get_voxels(h, indices, colors, n, out n);
+            O3dNative.o3d_voxelgrid_get_voxels(indices, colors, n, out n, h);
             GC.KeepAlive(this);
             return new Voxels(indices, colors);
         }
@@ -89,7 +89,7 @@ namespace O3d
         public int[] GetVoxel(double[] point)
         {
             var index = new int[3];
-            O3dNative.o3d_voxelgrid_get_voxel(Handle, Checks.Fixed(point, 3, "point", false), index);
+            O3dNative.o3d_voxelgrid_get_voxel(index, Handle, Checks.Fixed(point, 3, "point", false));
             GC.KeepAlive(this);
             return index;
         }
@@ -99,7 +99,7 @@ namespace O3d
         {
             ulong n = Checks.Rows3(points, "points");
             var flags = new int[n];
-            O3dNative.o3d_voxelgrid_check_if_included(Handle, points, n, flags);
+            O3dNative.o3d_voxelgrid_check_if_included(flags, Handle, points, n);
             GC.KeepAlive(this);
             var result = new bool[n];
             for (long i = 0; i < (long)n; ++i) result[i] = flags[i] != 0;

@@ -77,7 +77,7 @@ void define_boundingbox(py::module_& m) {
         [](py::handle box) {
             o3d_obb_t obb = obb_of(box);
             double pts[24];
-            check(o3d_obb_get_box_points(&obb, pts));
+            check(o3d_obb_get_box_points(pts, &obb));
             return mat_to_array(pts, 8, 3);
         },
         py::arg("box"), "The 8 corners (8, 3) of an OrientedBoundingBox.");
@@ -90,8 +90,8 @@ void define_boundingbox(py::module_& m) {
             std::vector<int32_t> idx(n);
             size_t got = 0;
             check(nogil([&] {
-                return o3d_obb_get_point_indices_within(&obb, n ? xyz.data() : nullptr, n, idx.data(), idx.size(),
-                                                        &got);
+                return o3d_obb_get_point_indices_within(idx.data(), idx.size(), &got, &obb, n ? xyz.data() : nullptr,
+                                                        n);
             }));
             return int_list(idx.data(), std::min(got, idx.size()));
         },
@@ -103,7 +103,7 @@ void define_boundingbox(py::module_& m) {
         [](const PyPointCloud& self, bool robust) {
             o3d_obb_t obb{};
             with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                return o3d_pointcloud_get_oriented_bounding_box(pc, robust ? 1 : 0, &obb);
+                return o3d_pointcloud_get_oriented_bounding_box(&obb, pc, robust ? 1 : 0);
             });
             return make_obb(obb);
         },
@@ -116,7 +116,7 @@ void define_boundingbox(py::module_& m) {
         [](const PyTriangleMesh& self, bool robust) {
             o3d_obb_t obb{};
             locked_const(self.h, [&](const o3d_trianglemesh_t* me) {
-                return o3d_trianglemesh_get_oriented_bounding_box(me, robust ? 1 : 0, &obb);
+                return o3d_trianglemesh_get_oriented_bounding_box(&obb, me, robust ? 1 : 0);
             });
             return make_obb(obb);
         },

@@ -56,11 +56,11 @@ py::array extrinsic_view(py::object self) {
 
 py::list trajectory_parameters(const PyTrajectory& self) {
     size_t n = 0;
-    check(o3d_camera_trajectory_size(self.h.get(), &n));
+    check(o3d_camera_trajectory_size(&n, self.h.get()));
     py::list out;
     for (size_t i = 0; i < n; ++i) {
         PyCameraParameters p;
-        check(o3d_camera_trajectory_get(self.h.get(), i, &p.intrinsic.v, p.extrinsic.data()));
+        check(o3d_camera_trajectory_get(&p.intrinsic.v, p.extrinsic.data(), self.h.get(), i));
         out.append(py::cast(p));
     }
     return out;
@@ -162,7 +162,7 @@ void define_camera(py::module_& m) {
         .def("__len__",
              [](const PyTrajectory& self) {
                  size_t n = 0;
-                 check(o3d_camera_trajectory_size(self.h.get(), &n));
+                 check(o3d_camera_trajectory_size(&n, self.h.get()));
                  return n;
              })
         .def("__repr__", [](const PyTrajectory&) { return std::string("PinholeCameraTrajectory class."); });

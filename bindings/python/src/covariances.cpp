@@ -13,10 +13,10 @@ py::array_t<double> covariance_copy(const PyPointCloud& self) {
     std::vector<double> buf;
     size_t n = 0;
     with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-        o3d_status s = o3d_pointcloud_get_covariances(pc, nullptr, 0, &n);
+        o3d_status s = o3d_pointcloud_get_array(nullptr, 0, &n, pc, O3D_POINTCLOUD_COVARIANCES);
         if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
         buf.resize(n * 9);
-        return o3d_pointcloud_get_covariances(pc, buf.data(), n, &n);
+        return o3d_pointcloud_get_array(buf.data(), n, &n, pc, O3D_POINTCLOUD_COVARIANCES);
     });
     py::array_t<double> out(std::vector<py::ssize_t>{(py::ssize_t)n, 3, 3});
     if (n) std::memcpy(out.mutable_data(), buf.data(), n * 9 * sizeof(double));
@@ -31,7 +31,7 @@ py::array covariance_view(const PyPointCloud& self) {
     {
         py::gil_scoped_release release;
         std::shared_lock<std::shared_mutex> lock(h->mutex);
-        s = o3d_pointcloud_covariances_view(h->pc, &data, &n);
+        s = o3d_pointcloud_array_view(&data, &n, h->pc, O3D_POINTCLOUD_COVARIANCES);
     }
     if (s == O3D_ERROR_INVALID_ARGUMENT) {
         // The view exists only while every matrix is symmetric (the storage is column-major): otherwise
@@ -64,7 +64,7 @@ void set_covariances(PyPointCloud& self, py::handle value) {
         n = (size_t)d.shape(0);
     }
     CloudPtr h = self.for_resize();
-    with_mut(h, [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_set_covariances(pc, n ? d.data() : nullptr, n); });
+    with_mut(h, [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COVARIANCES, n ? d.data() : nullptr, n); });
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ void define_covariances(py::module_& m) {
         .def("has_covariances",
              [](const PyPointCloud& self) {
                  int32_t v = 0;
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_has_covariances(pc, &v); });
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_has_array(&v, pc, O3D_POINTCLOUD_COVARIANCES); });
                  return v != 0;
              })
         .def(

@@ -14,7 +14,7 @@ py::array data_view(const PyFeature& f) {
     FeaturePtr h = f.h;
     size_t dim = f.dimension(), num = f.num();
     double* p = nullptr;
-    check(o3d_feature_data(h->p, &p));
+    check(o3d_feature_data(&p, h->p));
     if (!p || dim == 0 || num == 0)
         return py::array_t<double>(std::vector<py::ssize_t>{(py::ssize_t)dim, (py::ssize_t)num});
     std::vector<py::ssize_t> shape{(py::ssize_t)dim, (py::ssize_t)num};
@@ -87,11 +87,11 @@ py::array_t<int32_t> correspondences(const PyFeature& source, const PyFeature& t
         locks.add(a->mutex);
         locks.add(b->mutex);
         size_t capacity = 0;
-        s = o3d_feature_num(a->p, &capacity);  // at most one pair per source descriptor
+        s = o3d_feature_num(&capacity, a->p);  // at most one pair per source descriptor
         if (s == O3D_OK) {
             pairs.resize(2 * capacity);
-            s = o3d_correspondences_from_features(a->p, b->p, mutual_filter ? 1 : 0, ratio, num_threads,
-                                                  pairs.empty() ? nullptr : pairs.data(), capacity, &n);
+            s = o3d_correspondences_from_features(pairs.empty() ? nullptr : pairs.data(), capacity, &n, a->p, b->p,
+                                                  mutual_filter ? 1 : 0, ratio, num_threads);
         }
     }
     check(s);
@@ -120,13 +120,13 @@ FeaturePtr PyFeature::for_resize() {
 
 size_t PyFeature::dimension() const {
     size_t d = 0;
-    check(o3d_feature_dimension(h->p, &d));
+    check(o3d_feature_dimension(&d, h->p));
     return d;
 }
 
 size_t PyFeature::num() const {
     size_t n = 0;
-    check(o3d_feature_num(h->p, &n));
+    check(o3d_feature_num(&n, h->p));
     return n;
 }
 
@@ -176,7 +176,7 @@ void define_feature(py::module_& m) {
                 size_t dim = self.dimension(), num = self.num();
                 py::array_t<double> flat((py::ssize_t)(dim * num));
                 double* p = flat.mutable_data();
-                locked_const(self.h, [&](const o3d_feature_t* f) { return o3d_feature_get_data(f, p, dim * num); });
+                locked_const(self.h, [&](const o3d_feature_t* f) { return o3d_feature_get_data(p, dim * num, f); });
                 return py::make_tuple(dim, num, flat);
             },
             [](py::tuple t) {

@@ -28,7 +28,7 @@ void define_hull(py::module_& m) {
            [](const PyPointCloud& self, bool joggle_inputs) {
                return mesh_and_indices(self.size(), [&](o3d_trianglemesh_t** out, int32_t* idx, size_t cap, size_t* n) {
                    with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                       return o3d_pointcloud_compute_convex_hull(out, pc, joggle_inputs ? 1 : 0, idx, cap, n);
+                       return o3d_pointcloud_compute_convex_hull(out, idx, cap, n, pc, joggle_inputs ? 1 : 0);
                    });
                });
            },
@@ -41,7 +41,7 @@ void define_hull(py::module_& m) {
                 auto cam = as_vec3(camera_location, "camera_location");
                 return mesh_and_indices(self.size(), [&](o3d_trianglemesh_t** out, int32_t* idx, size_t cap, size_t* n) {
                     with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                        return o3d_pointcloud_hidden_point_removal(out, pc, cam.data(), radius, idx, cap, n);
+                        return o3d_pointcloud_hidden_point_removal(out, idx, cap, n, pc, cam.data(), radius);
                     });
                 });
             },
@@ -54,10 +54,10 @@ void define_hull(py::module_& m) {
         "compute_convex_hull",
         [](const PyTriangleMesh& self, bool joggle_inputs) {
             size_t nv = 0;
-            locked_const(self.h, [&](const o3d_trianglemesh_t* me) { return o3d_trianglemesh_num_vertices(me, &nv); });
+            locked_const(self.h, [&](const o3d_trianglemesh_t* me) { return o3d_trianglemesh_num_vertices(&nv, me); });
             return mesh_and_indices(nv, [&](o3d_trianglemesh_t** out, int32_t* idx, size_t cap, size_t* n) {
                 locked_const(self.h, [&](const o3d_trianglemesh_t* me) {
-                    return o3d_trianglemesh_compute_convex_hull(out, me, joggle_inputs ? 1 : 0, idx, cap, n);
+                    return o3d_trianglemesh_compute_convex_hull(out, idx, cap, n, me, joggle_inputs ? 1 : 0);
                 });
             });
         },

@@ -13,10 +13,10 @@ struct Format {
 Format format_of(const PyImage& img) {
     Format f;
     if (!img.get()) return f;  // Image(): empty
-    check(o3d_image_width(img.get(), &f.width));
-    check(o3d_image_height(img.get(), &f.height));
-    check(o3d_image_num_channels(img.get(), &f.channels));
-    check(o3d_image_bytes_per_channel(img.get(), &f.bytes));
+    check(o3d_image_width(&f.width, img.get()));
+    check(o3d_image_height(&f.height, img.get()));
+    check(o3d_image_num_channels(&f.channels, img.get()));
+    check(o3d_image_bytes_per_channel(&f.bytes, img.get()));
     return f;
 }
 
@@ -50,11 +50,11 @@ py::buffer_info buffer_of(PyImage& self) {
         size_t size = 0;
         if (self.readonly) {
             const uint8_t* p = nullptr;
-            check(o3d_image_data_view(self.get(), &p, &size));
+            check(o3d_image_array_view(&p, &size, self.get(), O3D_IMAGE_DATA));
             data = const_cast<uint8_t*>(p);
         } else {
             uint8_t* p = nullptr;
-            check(o3d_image_data_mutable_view(self.h->p, &p, &size));
+            check(o3d_image_array_mutable_view(&p, &size, self.h->p, O3D_IMAGE_DATA));
             data = p;
         }
     }
@@ -230,12 +230,12 @@ void define_image(py::module_& m) {
             [](const PyImage& self) {
                 const o3d_image_t* img = require(self, "_data_copy");
                 size_t size = 0;
-                o3d_status s = o3d_image_get_data(img, nullptr, 0, &size);
+                o3d_status s = o3d_image_get_array(nullptr, 0, &size, img, O3D_IMAGE_DATA);
                 if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) check(s);
                 PyObject* raw = PyBytes_FromStringAndSize(nullptr, (py::ssize_t)size);
                 if (!raw) throw py::error_already_set();
                 py::bytes out = py::reinterpret_steal<py::bytes>(raw);
-                check(o3d_image_get_data(img, reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size));
+                check(o3d_image_get_array(reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size, img, O3D_IMAGE_DATA));
                 return out;
             },
             "The pixel bytes, copied (o3d_image_get_data).");

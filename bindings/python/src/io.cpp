@@ -102,12 +102,12 @@ void define_io(py::module_& m) {
         [](const PyPointCloud& pcd, const std::string& format, bool write_ascii, bool compressed) {
             BufferPtr buf = encode(pcd, format, write_ascii, compressed);
             size_t size = 0;
-            o3d_status s = o3d_buffer_get_data(buf.get(), nullptr, 0, &size);
+            o3d_status s = o3d_buffer_get_data(nullptr, 0, &size, buf.get());
             if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) check(s);
             PyObject* raw = PyBytes_FromStringAndSize(nullptr, (py::ssize_t)size);
             if (!raw) throw py::error_already_set();
             py::bytes out = py::reinterpret_steal<py::bytes>(raw);
-            check(o3d_buffer_get_data(buf.get(), reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size));
+            check(o3d_buffer_get_data(reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size, buf.get()));
             return out;
         },
         py::arg("pointcloud"), py::arg("format"), py::arg("write_ascii") = false, py::arg("compressed") = false,
@@ -118,7 +118,7 @@ void define_io(py::module_& m) {
             BufferPtr buf = encode(pcd, format, write_ascii, compressed);
             const uint8_t* data = nullptr;
             size_t size = 0;
-            check(o3d_buffer_view(buf.get(), &data, &size));
+            check(o3d_buffer_view(&data, &size, buf.get()));
             if (!data || size == 0) return py::array(py::array_t<uint8_t>((py::ssize_t)0));
             py::array a(py::dtype::of<uint8_t>(), std::vector<py::ssize_t>{(py::ssize_t)size},
                         std::vector<py::ssize_t>{1}, data, keepalive(buf));

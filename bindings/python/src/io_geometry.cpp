@@ -43,7 +43,7 @@ py::bytes to_bytes(o3d_buffer_t* raw) {
     std::unique_ptr<o3d_buffer_t, void (*)(o3d_buffer_t*)> buf(raw, &o3d_buffer_destroy);
     const uint8_t* data = nullptr;
     size_t size = 0;
-    check(o3d_buffer_view(buf.get(), &data, &size));
+    check(o3d_buffer_view(&data, &size, buf.get()));
     return py::bytes(reinterpret_cast<const char*>(data), size);
 }
 
@@ -161,7 +161,7 @@ void define_camera_io(py::module_& m) {
         [](py::handle filename) {
             const std::string path = path_of(filename);
             PyIntrinsic out;
-            check(nogil([&] { return o3d_io_read_pinhole_camera_intrinsic(path.c_str(), &out.v); }), path);
+            check(nogil([&] { return o3d_io_read_pinhole_camera_intrinsic(&out.v, path.c_str()); }), path);
             return out;
         },
         py::arg("filename"), "Read a PinholeCameraIntrinsic JSON file (Open3D's layout).");
@@ -180,7 +180,7 @@ void define_camera_io(py::module_& m) {
             const std::string path = path_of(filename);
             PyCameraParameters out;
             check(nogil([&] {
-                      return o3d_io_read_pinhole_camera_parameters(path.c_str(), &out.intrinsic.v, out.extrinsic.data());
+                      return o3d_io_read_pinhole_camera_parameters(&out.intrinsic.v, out.extrinsic.data(), path.c_str());
                   }),
                   path);
             return out;

@@ -78,22 +78,22 @@ const TreePtr& need(const KDTree& k) {
 
 size_t tree_dimension(const TreePtr& tree) {
     size_t d = 0;
-    check(o3d_kdtree_dimension(tree.get(), &d));
+    check(o3d_kdtree_dimension(&d, tree.get()));
     return d;
 }
 
 ResultPtr run_search_xd(const TreePtr& tree, const double* q, size_t nq, size_t dim, const o3d_search_param_t& p,
                         int32_t num_threads) {
     o3d_search_result_t* res = nullptr;
-    check(nogil([&] { return o3d_kdtree_search_xd(tree.get(), q, nq, dim, &p, num_threads, &res); }));
+    check(nogil([&] { return o3d_kdtree_search_xd(&res, tree.get(), q, nq, dim, &p, num_threads); }));
     return ResultPtr(res, o3d_search_result_destroy);
 }
 
 ResultPtr run_search(const TreePtr& tree, const Rows3& q, const o3d_search_param_t& p, int32_t num_threads) {
     o3d_search_result_t* res = nullptr;
     check(nogil([&] {
-        return q.f32 ? o3d_kdtree_search_f32(tree.get(), static_cast<const float*>(q.data()), q.n, &p, num_threads, &res)
-                     : o3d_kdtree_search(tree.get(), static_cast<const double*>(q.data()), q.n, &p, num_threads, &res);
+        return q.f32 ? o3d_kdtree_search_f32(&res, tree.get(), static_cast<const float*>(q.data()), q.n, &p, num_threads)
+                     : o3d_kdtree_search(&res, tree.get(), static_cast<const double*>(q.data()), q.n, &p, num_threads);
     }));
     return ResultPtr(res, o3d_search_result_destroy);
 }
@@ -119,11 +119,11 @@ py::tuple batch(const KDTree& self, py::handle queries, const o3d_search_param_t
         r = run_search(tree, as_rows3(queries, "queries"), p, num_threads);
     }
     size_t nq = 0, total = 0;
-    check(o3d_search_result_counts(r.get(), &nq, &total));
+    check(o3d_search_result_counts(&nq, &total, r.get()));
     const int64_t* off = nullptr;
     const int32_t* idx = nullptr;
     const double* d2 = nullptr;
-    check(o3d_search_result_view(r.get(), &off, &idx, &d2));
+    check(o3d_search_result_view(&off, &idx, &d2, r.get()));
     py::object owner = keepalive(r);
     py::array offsets = off ? flat_view(off, nq + 1, owner) : py::array(py::array_t<int64_t>(std::vector<py::ssize_t>{(py::ssize_t)nq + 1}));
     if (!off) std::fill_n(static_cast<int64_t*>(offsets.mutable_data()), nq + 1, int64_t(0));
@@ -138,13 +138,13 @@ py::tuple single(const KDTree& self, py::handle query, const o3d_search_param_t&
     q.n = 1;
     ResultPtr r = run_search(need(self), q, p, 1);
     size_t nq = 0, total = 0;
-    check(o3d_search_result_counts(r.get(), &nq, &total));
+    check(o3d_search_result_counts(&nq, &total, r.get()));
     int64_t offsets[2] = {0, 0};
-    check(o3d_search_result_get_offsets(r.get(), offsets, 2));
+    check(o3d_search_result_get_offsets(offsets, 2, r.get()));
     py::array_t<int32_t> idx((py::ssize_t)total);
     py::array_t<double> d2((py::ssize_t)total);
-    check(o3d_search_result_get_indices(r.get(), idx.mutable_data(), total));
-    check(o3d_search_result_get_distances2(r.get(), d2.mutable_data(), total));
+    check(o3d_search_result_get_indices(idx.mutable_data(), total, r.get()));
+    check(o3d_search_result_get_distances2(d2.mutable_data(), total, r.get()));
     return py::make_tuple((int)(offsets[1] - offsets[0]), idx, d2);
 }
 
@@ -160,11 +160,11 @@ py::tuple single_xd(const KDTree& self, py::handle query, const o3d_search_param
     if (!q) throw py::error_already_set();
     ResultPtr r = run_search_xd(tree, q.data(), 1, (size_t)q.size(), p, 1);
     size_t nq = 0, total = 0;
-    check(o3d_search_result_counts(r.get(), &nq, &total));
+    check(o3d_search_result_counts(&nq, &total, r.get()));
     py::array_t<int32_t> idx((py::ssize_t)total);
     py::array_t<double> d2((py::ssize_t)total);
-    check(o3d_search_result_get_indices(r.get(), idx.mutable_data(), total));
-    check(o3d_search_result_get_distances2(r.get(), d2.mutable_data(), total));
+    check(o3d_search_result_get_indices(idx.mutable_data(), total, r.get()));
+    check(o3d_search_result_get_distances2(d2.mutable_data(), total, r.get()));
     return py::make_tuple((int)total, idx, d2);
 }
 
@@ -301,13 +301,13 @@ void define_kdtree(py::module_& m) {
         .def("size",
              [](const KDTree& self) {
                  size_t n = 0;
-                 if (self.tree) check(o3d_kdtree_size(self.tree.get(), &n));
+                 if (self.tree) check(o3d_kdtree_size(&n, self.tree.get()));
                  return n;
              })
         .def("__len__",
              [](const KDTree& self) {
                  size_t n = 0;
-                 if (self.tree) check(o3d_kdtree_size(self.tree.get(), &n));
+                 if (self.tree) check(o3d_kdtree_size(&n, self.tree.get()));
                  return n;
              })
         .def(

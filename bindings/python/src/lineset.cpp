@@ -30,7 +30,7 @@ py::array float_view(const PyLineSet& self, int32_t which) {
     LineSetPtr h = self.h;
     const double* data = nullptr;
     size_t n = 0;
-    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(ls, which, &data, &n); });
+    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(&data, &n, ls, which); });
     return view_array(data, n, 3, keepalive(h), false);
 }
 
@@ -45,7 +45,7 @@ py::array lines_view(const PyLineSet& self) {
     LineSetPtr h = self.h;
     const int32_t* data = nullptr;
     size_t n = 0;
-    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_lines_view(ls, &data, &n); });
+    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_index_array_view(&data, &n, ls, O3D_LINESET_LINES); });
     if (!data || n == 0) return py::array_t<int32_t>(std::vector<py::ssize_t>{0, 2});
     py::array a(py::dtype::of<int32_t>(), {(py::ssize_t)n, (py::ssize_t)2},
                 {(py::ssize_t)(2 * sizeof(int32_t)), (py::ssize_t)sizeof(int32_t)}, data, keepalive(h));
@@ -77,7 +77,7 @@ std::vector<int32_t> pairs_of(py::handle value, const char* what) {
 
 void set_lines(PyLineSet& self, py::handle value) {
     std::vector<int32_t> l = pairs_of(value, "lines");
-    locked_mut(self.for_resize(), [&](o3d_lineset_t* ls) { return o3d_lineset_set_lines(ls, l.data(), l.size() / 2); });
+    locked_mut(self.for_resize(), [&](o3d_lineset_t* ls) { return o3d_lineset_set_index_array(ls, O3D_LINESET_LINES, l.data(), l.size() / 2); });
 }
 
 size_t count(const PyLineSet& self, o3d_status (*fn)(const o3d_lineset_t*, size_t*)) {
@@ -89,7 +89,7 @@ size_t count(const PyLineSet& self, o3d_status (*fn)(const o3d_lineset_t*, size_
 bool has_colors(const PyLineSet& self) {
     const double* data = nullptr;
     size_t n = 0;
-    locked_const(self.h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(ls, O3D_LINESET_COLORS, &data, &n); });
+    locked_const(self.h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(&data, &n, ls, O3D_LINESET_COLORS); });
     return n > 0 && n == count(self, &o3d_lineset_num_lines);
 }
 
@@ -173,18 +173,18 @@ void define_lineset(py::module_& m) {
                 std::vector<int32_t> lines;
                 size_t np = 0, nc = 0, nl = 0;
                 locked_const(self.h, [&](const o3d_lineset_t* ls) {
-                    o3d_status s = o3d_lineset_get_array(ls, O3D_LINESET_POINTS, nullptr, 0, &np);
+                    o3d_status s = o3d_lineset_get_array(nullptr, 0, &np, ls, O3D_LINESET_POINTS);
                     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
                     pts.resize(np * 3);
-                    if ((s = o3d_lineset_get_array(ls, O3D_LINESET_POINTS, pts.data(), np, &np)) != O3D_OK) return s;
-                    s = o3d_lineset_get_array(ls, O3D_LINESET_COLORS, nullptr, 0, &nc);
+                    if ((s = o3d_lineset_get_array(pts.data(), np, &np, ls, O3D_LINESET_POINTS)) != O3D_OK) return s;
+                    s = o3d_lineset_get_array(nullptr, 0, &nc, ls, O3D_LINESET_COLORS);
                     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
                     cols.resize(nc * 3);
-                    if ((s = o3d_lineset_get_array(ls, O3D_LINESET_COLORS, cols.data(), nc, &nc)) != O3D_OK) return s;
-                    s = o3d_lineset_get_lines(ls, nullptr, 0, &nl);
+                    if ((s = o3d_lineset_get_array(cols.data(), nc, &nc, ls, O3D_LINESET_COLORS)) != O3D_OK) return s;
+                    s = o3d_lineset_get_index_array(nullptr, 0, &nl, ls, O3D_LINESET_LINES);
                     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
                     lines.resize(nl * 2);
-                    return o3d_lineset_get_lines(ls, lines.data(), nl, &nl);
+                    return o3d_lineset_get_index_array(lines.data(), nl, &nl, ls, O3D_LINESET_LINES);
                 });
                 py::array_t<int32_t> l(std::vector<py::ssize_t>{(py::ssize_t)nl, 2});
                 if (nl) std::memcpy(l.mutable_data(), lines.data(), nl * 2 * sizeof(int32_t));

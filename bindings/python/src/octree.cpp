@@ -10,7 +10,7 @@ namespace o3dpy {
 namespace {
 
 void root(const PyOctree& self, double* origin, double* size, int32_t* depth) {
-    locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_get_root(o, origin, size, depth); });
+    locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_get_root(origin, size, depth, o); });
 }
 
 }  // namespace
@@ -63,14 +63,14 @@ void define_octree(py::module_& m) {
         .def("_num_leaf_nodes",
              [](const PyOctree& self) {
                  size_t n = 0;
-                 locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_num_leaf_nodes(o, &n); });
+                 locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_num_leaf_nodes(&n, o); });
                  return n;
              },
              "Number of non-empty leaves.")
         .def("is_empty",
              [](const PyOctree& self) {
                  size_t n = 0;
-                 locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_num_leaf_nodes(o, &n); });
+                 locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_num_leaf_nodes(&n, o); });
                  return n == 0;
              })
         .def(
@@ -83,11 +83,11 @@ void define_octree(py::module_& m) {
                 std::vector<int32_t> idx;
                 size_t n = 0;
                 locked_const(self.h, [&](const o3d_octree_t* o) {
-                    o3d_status s = o3d_octree_locate_leaf_node(o, p.data(), &found, &info, color, nullptr, 0, &n);
+                    o3d_status s = o3d_octree_locate_leaf_node(&found, &info, color, nullptr, 0, &n, o, p.data());
                     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
                     if (!found) return O3D_OK;
                     idx.resize(n);
-                    return o3d_octree_locate_leaf_node(o, p.data(), &found, &info, color, idx.data(), idx.size(), &n);
+                    return o3d_octree_locate_leaf_node(&found, &info, color, idx.data(), idx.size(), &n, o, p.data());
                 });
                 if (!found) return py::none();
                 return py::make_tuple(int_list(idx.data(), std::min(n, idx.size())), vec3_to_array(color),

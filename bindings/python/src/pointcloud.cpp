@@ -27,7 +27,7 @@ CloudPtr PyPointCloud::for_resize() {
 
 size_t PyPointCloud::size() const {
     size_t n = 0;
-    with_const(h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_size(pc, &n); });
+    with_const(h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_size(&n, pc); });
     return n;
 }
 
@@ -49,9 +49,9 @@ py::array get_attr(PyPointCloud& self, Attr a) {
     double* data = nullptr;
     size_t n = 0;
     with_mut(h, [&](o3d_pointcloud_t* pc) {
-        return a == Attr::Points    ? o3d_pointcloud_points_mutable_view(pc, &data, &n)
-               : a == Attr::Normals ? o3d_pointcloud_normals_mutable_view(pc, &data, &n)
-                                    : o3d_pointcloud_colors_mutable_view(pc, &data, &n);
+        return a == Attr::Points    ? o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_POINTS)
+               : a == Attr::Normals ? o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_NORMALS)
+                                    : o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_COLORS);
     });
     return view_array(data, n, 3, keepalive(h), true);
 }
@@ -63,14 +63,14 @@ void set_attr(PyPointCloud& self, Attr a, py::handle value) {
     with_mut(h, [&](o3d_pointcloud_t* pc) {
         if (r.f32) {
             auto p = static_cast<const float*>(r.data());
-            return a == Attr::Points    ? o3d_pointcloud_set_points_f32(pc, p, r.n)
-                   : a == Attr::Normals ? o3d_pointcloud_set_normals_f32(pc, p, r.n)
-                                        : o3d_pointcloud_set_colors_f32(pc, p, r.n);
+            return a == Attr::Points    ? o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_POINTS, p, r.n)
+                   : a == Attr::Normals ? o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_NORMALS, p, r.n)
+                                        : o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_COLORS, p, r.n);
         }
         auto p = static_cast<const double*>(r.data());
-        return a == Attr::Points    ? o3d_pointcloud_set_points(pc, p, r.n)
-               : a == Attr::Normals ? o3d_pointcloud_set_normals(pc, p, r.n)
-                                    : o3d_pointcloud_set_colors(pc, p, r.n);
+        return a == Attr::Points    ? o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, p, r.n)
+               : a == Attr::Normals ? o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, p, r.n)
+                                    : o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COLORS, p, r.n);
     });
 }
 
@@ -110,7 +110,7 @@ py::array distances(const CloudPtr& h, F&& f) {
     std::vector<double> out;
     with_const(h, [&](const o3d_pointcloud_t* pc) {
         size_t n = 0;
-        o3d_status s = o3d_pointcloud_size(pc, &n);
+        o3d_status s = o3d_pointcloud_size(&n, pc);
         if (s != O3D_OK) return s;
         out.resize(n);
         size_t got = 0;
@@ -267,19 +267,19 @@ void define_pointcloud(py::module_& m) {
         .def("get_min_bound",
              [](const PyPointCloud& self) {
                  std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_min_bound(pc, v.data()); });
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_min_bound(v.data(), pc); });
                  return vec3_array(v);
              })
         .def("get_max_bound",
              [](const PyPointCloud& self) {
                  std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_max_bound(pc, v.data()); });
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_max_bound(v.data(), pc); });
                  return vec3_array(v);
              })
         .def("get_center",
              [](const PyPointCloud& self) {
                  std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_center(pc, v.data()); });
+                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_center(v.data(), pc); });
                  return vec3_array(v);
              })
         .def(
@@ -287,7 +287,7 @@ void define_pointcloud(py::module_& m) {
             [](const PyPointCloud& self) {
                 std::array<double, 3> lo{}, hi{};
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_get_axis_aligned_bounding_box(pc, lo.data(), hi.data());
+                    return o3d_pointcloud_get_axis_aligned_bounding_box(lo.data(), hi.data(), pc);
                 });
                 py::object cls = py::module_::import("o3d.geometry").attr("AxisAlignedBoundingBox");
                 return cls(vec3_array(lo), vec3_array(hi));
@@ -405,7 +405,7 @@ void define_pointcloud(py::module_& m) {
             "compute_nearest_neighbor_distance",
             [](const PyPointCloud& self, int32_t num_threads) {
                 return distances(self.h, [&](const o3d_pointcloud_t* pc, double* out, size_t cap, size_t* n) {
-                    return o3d_pointcloud_compute_nearest_neighbor_distance(pc, out, cap, n, num_threads);
+                    return o3d_pointcloud_compute_nearest_neighbor_distance(out, cap, n, pc, num_threads);
                 });
             },
             py::arg("num_threads") = 0, "Distance from each point to its nearest other point, (N,) float64.")
@@ -416,7 +416,7 @@ void define_pointcloud(py::module_& m) {
                 return distances(self.h, [&](const o3d_pointcloud_t* pc, double* out, size_t cap, size_t* n) {
                     std::shared_lock<std::shared_mutex> lock(t->mutex, std::defer_lock);
                     if (t != self.h) lock.lock();
-                    return o3d_pointcloud_compute_point_cloud_distance(pc, t->pc, out, cap, n, num_threads);
+                    return o3d_pointcloud_compute_point_cloud_distance(out, cap, n, pc, t->pc, num_threads);
                 });
             },
             py::arg("target"), py::arg("num_threads") = 0,
@@ -448,9 +448,9 @@ void define_pointcloud(py::module_& m) {
                 const double* data = nullptr;
                 size_t n = 0;
                 with_const(h, [&](const o3d_pointcloud_t* pc) {
-                    return which == 0   ? o3d_pointcloud_points_view(pc, &data, &n)
-                           : which == 1 ? o3d_pointcloud_normals_view(pc, &data, &n)
-                                        : o3d_pointcloud_colors_view(pc, &data, &n);
+                    return which == 0   ? o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_POINTS)
+                           : which == 1 ? o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_NORMALS)
+                                        : o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_COLORS);
                 });
                 return view_array(data, n, 3, keepalive(h), false);
             },

@@ -13,7 +13,7 @@ namespace {
 
 size_t count_of(const o3d_pointcloud_t* pc) {
     size_t n = 0;
-    o3d_pointcloud_size(pc, &n);
+    o3d_pointcloud_size(&n, pc);
     return n;
 }
 
@@ -80,7 +80,7 @@ void define_pointcloud_tools(py::module_& m) {
                const int32_t k = to_int32(nb_neighbors, "nb_neighbors");
                return outlier_filter(self, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, int32_t* idx,
                                                size_t cap, size_t* n) {
-                   return o3d_pointcloud_remove_statistical_outlier(out, pc, k, std_ratio, idx, cap, n);
+                   return o3d_pointcloud_remove_statistical_outlier(out, idx, cap, n, pc, k, std_ratio);
                });
            },
            py::arg("nb_neighbors"), py::arg("std_ratio"), py::arg("print_progress") = false,
@@ -93,7 +93,7 @@ void define_pointcloud_tools(py::module_& m) {
                 const int32_t k = to_int32(nb_points, "nb_points");
                 return outlier_filter(self, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, int32_t* idx,
                                                 size_t cap, size_t* n) {
-                    return o3d_pointcloud_remove_radius_outlier(out, pc, k, radius, idx, cap, n);
+                    return o3d_pointcloud_remove_radius_outlier(out, idx, cap, n, pc, k, radius);
                 });
             },
             py::arg("nb_points"), py::arg("radius"), py::arg("print_progress") = false,
@@ -132,8 +132,8 @@ void define_pointcloud_tools(py::module_& m) {
                 size_t n = 0;
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     idx.resize(count_of(pc));
-                    return o3d_pointcloud_segment_plane(pc, distance_threshold, rn, it, probability, s, plane.data(),
-                                                        idx.data(), idx.size(), &n);
+                    return o3d_pointcloud_segment_plane(plane.data(), idx.data(), idx.size(), &n, pc,
+                                                        distance_threshold, rn, it, probability, s);
                 });
                 return py::make_tuple(vec_array(plane.data(), 4), index_list(idx, n));
             },
@@ -150,7 +150,7 @@ void define_pointcloud_tools(py::module_& m) {
                 size_t n = 0;
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     labels.resize(count_of(pc));
-                    return o3d_pointcloud_cluster_dbscan(pc, eps, mp, labels.data(), labels.size(), &n);
+                    return o3d_pointcloud_cluster_dbscan(labels.data(), labels.size(), &n, pc, eps, mp);
                 });
                 py::array_t<int32_t> out((py::ssize_t)n);
                 if (n) std::memcpy(out.mutable_data(), labels.data(), n * sizeof(int32_t));
@@ -165,7 +165,7 @@ void define_pointcloud_tools(py::module_& m) {
                 std::array<double, 3> mean{};
                 std::array<double, 9> cov{};
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_compute_mean_and_covariance(pc, mean.data(), cov.data());
+                    return o3d_pointcloud_compute_mean_and_covariance(mean.data(), cov.data(), pc);
                 });
                 py::array_t<double> c(std::vector<py::ssize_t>{3, 3});
                 std::memcpy(c.mutable_data(), cov.data(), sizeof(cov));
@@ -180,7 +180,7 @@ void define_pointcloud_tools(py::module_& m) {
                 size_t n = 0;
                 with_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     d.resize(count_of(pc));
-                    return o3d_pointcloud_compute_mahalanobis_distance(pc, d.data(), d.size(), &n);
+                    return o3d_pointcloud_compute_mahalanobis_distance(d.data(), d.size(), &n, pc);
                 });
                 return vec_array(d.data(), n);
             },

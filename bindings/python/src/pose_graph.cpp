@@ -133,7 +133,7 @@ PyPoseGraph clone(const PyPoseGraph& g) {
 size_t count(const PyPoseGraph& g, bool nodes) {
     size_t n = 0;
     locked_const(g.h, [&](const o3d_pose_graph_t* p) {
-        return nodes ? o3d_pose_graph_num_nodes(p, &n) : o3d_pose_graph_num_edges(p, &n);
+        return nodes ? o3d_pose_graph_num_nodes(&n, p) : o3d_pose_graph_num_edges(&n, p);
     });
     return n;
 }
@@ -177,7 +177,7 @@ Summary optimize(PyPoseGraph& graph, py::handle method, py::handle criteria, py:
     {
         py::gil_scoped_release release;
         std::unique_lock<std::shared_mutex> lock(h->mutex);
-        st = o3d_global_optimization(h->p, &o, &s);
+        st = o3d_global_optimization(&s, h->p, &o);
     }
     ctx.rethrow();
     check(st);
@@ -217,7 +217,7 @@ void define_pose_graph(py::module_& m) {
              [](const PyPoseGraph& g, int64_t i) {
                  double pose[16];
                  size_t k = as_index(i);
-                 locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_node(p, k, pose); });
+                 locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_node(pose, p, k); });
                  return readonly_matrix(pose, 4, 4);
              })
         .def("_set_node",
@@ -236,7 +236,7 @@ void define_pose_graph(py::module_& m) {
                  o3d_pose_graph_edge_t e;
                  check(o3d_pose_graph_edge_init(&e, sizeof(e)));
                  size_t k = as_index(i);
-                 locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_edge(p, k, &e); });
+                 locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_edge(&e, p, k); });
                  return edge_tuple(e);
              })
         .def("_set_edge",

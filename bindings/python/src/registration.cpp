@@ -120,14 +120,14 @@ void def_kernel(py::class_<E, Estimation>& c) {
 Result convert_result(o3d_registration_result_t* r) {
     Result out;
     py::array_t<double> T(std::vector<py::ssize_t>{4, 4});
-    check(o3d_registration_result_get_transformation(r, T.mutable_data()));
-    check(o3d_registration_result_get_fitness(r, &out.fitness));
-    check(o3d_registration_result_get_inlier_rmse(r, &out.inlier_rmse));
+    check(o3d_registration_result_get_transformation(T.mutable_data(), r));
+    check(o3d_registration_result_get_fitness(&out.fitness, r));
+    check(o3d_registration_result_get_inlier_rmse(&out.inlier_rmse, r));
     size_t n = 0;
-    o3d_status s = o3d_registration_result_get_correspondence_set(r, nullptr, 0, &n);
+    o3d_status s = o3d_registration_result_get_correspondence_set(nullptr, 0, &n, r);
     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) check(s);
     py::array_t<int32_t> c(std::vector<py::ssize_t>{(py::ssize_t)n, 2});
-    if (n) check(o3d_registration_result_get_correspondence_set(r, c.mutable_data(), n, &n));
+    if (n) check(o3d_registration_result_get_correspondence_set(c.mutable_data(), n, &n, r));
     out.transformation = T;
     out.correspondence_set = c;
     return out;
@@ -362,7 +362,7 @@ void define_registration(py::module_& m) {
             py::array_t<double> out(std::vector<py::ssize_t>{6, 6});
             double* p = out.mutable_data();
             with_pair(source, target, [&](const o3d_pointcloud_t* a, const o3d_pointcloud_t* b) {
-                return o3d_get_information_matrix_from_point_clouds(a, b, max_dist, T.data(), p);
+                return o3d_get_information_matrix_from_point_clouds(p, a, b, max_dist, T.data());
             });
             return out;
         },

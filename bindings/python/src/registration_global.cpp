@@ -236,7 +236,7 @@ void define_registration_global(py::module_& m) {
                     SharedLocks locks;
                     locks.add(a->mutex);
                     locks.add(b->mutex);
-                    s = o3d_correspondence_checker_check(&self.c, a->pc, b->pc, cp, n, T.data(), &passed);
+                    s = o3d_correspondence_checker_check(&passed, &self.c, a->pc, b->pc, cp, n, T.data());
                 }
                 check(s);
                 return passed != 0;

@@ -63,7 +63,7 @@ void define_robust_kernel(py::module_& m) {
             "weight",
             [](const RobustKernel& k, double residual) {
                 double w = 0.0;
-                check(o3d_robust_kernel_weight(k.kind, k.k, residual, &w));
+                check(o3d_robust_kernel_weight(&w, k.kind, k.k, residual));
                 return w;
             },
             py::arg("residual"), "The weight this kernel gives to a residual.")

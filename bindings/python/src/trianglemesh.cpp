@@ -95,7 +95,7 @@ py::array get_float(PyTriangleMesh& self, const FloatAttr& a) {
     MeshPtr h = self.h;
     double* data = nullptr;
     size_t n = 0;
-    locked_mut(h, [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_array_mutable_view(m, a.which, &data, &n); });
+    locked_mut(h, [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_array_mutable_view(&data, &n, m, a.which); });
     return view_array(data, n, a.cols, keepalive(h), true);
 }
 
@@ -122,7 +122,7 @@ py::array get_index(PyTriangleMesh& self, int32_t which) {
     MeshPtr h = self.h;
     int32_t* data = nullptr;
     size_t n = 0;
-    locked_mut(h, [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_index_array_mutable_view(m, which, &data, &n); });
+    locked_mut(h, [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_index_array_mutable_view(&data, &n, m, which); });
     return int_view(data, n, which == O3D_MESH_TRIANGLES, keepalive(h), true);
 }
 
@@ -136,14 +136,14 @@ void set_index(PyTriangleMesh& self, int32_t which, py::handle value) {
 
 bool has(const PyTriangleMesh& self, int32_t which) {
     int32_t v = 0;
-    locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_has_array(m, which, &v); });
+    locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_has_array(&v, m, which); });
     return v != 0;
 }
 
 size_t count(const PyTriangleMesh& self, bool triangles) {
     size_t n = 0;
     locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-        return triangles ? o3d_trianglemesh_num_triangles(m, &n) : o3d_trianglemesh_num_vertices(m, &n);
+        return triangles ? o3d_trianglemesh_num_triangles(&n, m) : o3d_trianglemesh_num_vertices(&n, m);
     });
     return n;
 }
@@ -191,7 +191,7 @@ py::array bound(const PyTriangleMesh& self, o3d_status (*fn)(const o3d_trianglem
 
 py::list get_textures(const PyTriangleMesh& self) {
     size_t n = 0;
-    locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_texture_count(m, &n); });
+    locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_texture_count(&n, m); });
     py::list out;
     for (size_t i = 0; i < n; ++i) {
         o3d_image_t* img = nullptr;
@@ -278,7 +278,7 @@ void define_trianglemesh(py::module_& m) {
              [](const PyTriangleMesh& self) { return has(self, O3D_MESH_TRIANGLE_MATERIAL_IDS); })
         .def("has_textures", [](const PyTriangleMesh& self) {
             size_t n = 0;
-            locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_texture_count(m, &n); });
+            locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_texture_count(&n, m); });
             return n > 0;
         })
         .def("is_empty", [](const PyTriangleMesh& self) { return count(self, false) == 0; })
@@ -392,7 +392,7 @@ void define_trianglemesh(py::module_& m) {
             [](const PyTriangleMesh& self) {
                 std::array<double, 3> lo{}, hi{};
                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_get_axis_aligned_bounding_box(m, lo.data(), hi.data());
+                    return o3d_trianglemesh_get_axis_aligned_bounding_box(lo.data(), hi.data(), m);
                 });
                 return make_aabb(lo.data(), hi.data());
             },
@@ -426,14 +426,14 @@ void define_trianglemesh(py::module_& m) {
         .def("get_surface_area",
              [](const PyTriangleMesh& self) {
                  double v = 0;
-                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_surface_area(m, &v); });
+                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_surface_area(&v, m); });
                  return v;
              })
         .def(
             "get_volume",
             [](const PyTriangleMesh& self) {
                 double v = 0;
-                locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_volume(m, &v); });
+                locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_volume(&v, m); });
                 return v;
             },
             "Enclosed volume; raises ValueError (InvalidArgumentError) unless watertight and orientable.")
@@ -443,7 +443,7 @@ void define_trianglemesh(py::module_& m) {
             [](const PyTriangleMesh& self, bool allow_boundary_edges) {
                 int32_t v = 0;
                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_is_edge_manifold(m, allow_boundary_edges ? 1 : 0, &v);
+                    return o3d_trianglemesh_is_edge_manifold(&v, m, allow_boundary_edges ? 1 : 0);
                 });
                 return v != 0;
             },
@@ -457,7 +457,7 @@ void define_trianglemesh(py::module_& m) {
              [](const PyTriangleMesh& self) {
                  int64_t v = 0;
                  locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                     return o3d_trianglemesh_euler_poincare_characteristic(m, &v);
+                     return o3d_trianglemesh_euler_poincare_characteristic(&v, m);
                  });
                  return v;
              })
@@ -468,13 +468,13 @@ void define_trianglemesh(py::module_& m) {
                 std::vector<double> areas;
                 size_t nt = 0, nc = 0;
                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                    o3d_status s = o3d_trianglemesh_num_triangles(m, &nt);
+                    o3d_status s = o3d_trianglemesh_num_triangles(&nt, m);
                     if (s != O3D_OK) return s;
                     clusters.resize(nt);
                     sizes.resize(nt);
                     areas.resize(nt);
-                    return o3d_trianglemesh_cluster_connected_triangles(m, clusters.data(), sizes.data(), areas.data(),
-                                                                        nt, &nt, &nc);
+                    return o3d_trianglemesh_cluster_connected_triangles(clusters.data(), sizes.data(), areas.data(),
+                                                                        nt, &nt, &nc, m);
                 });
                 py::array_t<int32_t> c((py::ssize_t)nt), n((py::ssize_t)nc);
                 py::array_t<double> a((py::ssize_t)nc);
@@ -497,15 +497,15 @@ void define_trianglemesh(py::module_& m) {
                 std::vector<int32_t> i;
                 size_t n = 0;
                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                    o3d_status s = is_index ? o3d_trianglemesh_get_index_array(m, which, nullptr, 0, &n)
-                                            : o3d_trianglemesh_get_array(m, which, nullptr, 0, &n);
+                    o3d_status s = is_index ? o3d_trianglemesh_get_index_array(nullptr, 0, &n, m, which)
+                                            : o3d_trianglemesh_get_array(nullptr, 0, &n, m, which);
                     if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
                     if (is_index) {
                         i.resize(n * cols);
-                        return o3d_trianglemesh_get_index_array(m, which, i.data(), n, &n);
+                        return o3d_trianglemesh_get_index_array(i.data(), n, &n, m, which);
                     }
                     f.resize(n * cols);
-                    return o3d_trianglemesh_get_array(m, which, f.data(), n, &n);
+                    return o3d_trianglemesh_get_array(f.data(), n, &n, m, which);
                 });
                 if (is_index) {
                     py::array_t<int32_t> out(cols == 1 ? std::vector<py::ssize_t>{(py::ssize_t)n}
@@ -526,13 +526,13 @@ void define_trianglemesh(py::module_& m) {
                     const int32_t* data = nullptr;
                     size_t n = 0;
                     locked_const(h, [&](const o3d_trianglemesh_t* m) {
-                        return o3d_trianglemesh_index_array_view(m, which, &data, &n);
+                        return o3d_trianglemesh_index_array_view(&data, &n, m, which);
                     });
                     return int_view(const_cast<int32_t*>(data), n, which == O3D_MESH_TRIANGLES, keepalive(h), false);
                 }
                 const double* data = nullptr;
                 size_t n = 0;
-                locked_const(h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_array_view(m, which, &data, &n); });
+                locked_const(h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_array_view(&data, &n, m, which); });
                 return view_array(data, n, which == O3D_MESH_TRIANGLE_UVS ? 2 : 3, keepalive(h), false);
             },
             py::arg("which"), "Read-only zero-copy view of the array O3D_MESH_* `which`.");

@@ -17,7 +17,7 @@ PyVoxelGrid make(F&& f) {
 
 size_t num_voxels(const PyVoxelGrid& self) {
     size_t n = 0;
-    locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_num_voxels(g, &n); });
+    locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_num_voxels(&n, g); });
     return n;
 }
 
@@ -70,14 +70,14 @@ void define_voxelgrid(py::module_& m) {
                                [](const PyVoxelGrid& self) {
                                    double v = 0;
                                    locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                                       return o3d_voxelgrid_get_voxel_size(g, &v);
+                                       return o3d_voxelgrid_get_voxel_size(&v, g);
                                    });
                                    return v;
                                })
         .def_property_readonly("origin",
                                [](const PyVoxelGrid& self) {
                                    double o[3];
-                                   locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_origin(g, o); });
+                                   locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_origin(o, g); });
                                    return vec3_to_array(o);
                                })
         .def("has_voxels", [](const PyVoxelGrid& self) { return num_voxels(self) > 0; })
@@ -94,11 +94,11 @@ void define_voxelgrid(py::module_& m) {
                 std::vector<double> col;
                 size_t n = 0;
                 locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                    o3d_status s = o3d_voxelgrid_num_voxels(g, &n);
+                    o3d_status s = o3d_voxelgrid_num_voxels(&n, g);
                     if (s != O3D_OK) return s;
                     idx.resize(n * 3);
                     col.resize(n * 3);
-                    return o3d_voxelgrid_get_voxels(g, idx.data(), col.data(), n, &n);
+                    return o3d_voxelgrid_get_voxels(idx.data(), col.data(), n, &n, g);
                 });
                 py::array_t<int32_t> gi(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
                 py::array_t<double> co(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
@@ -115,7 +115,7 @@ void define_voxelgrid(py::module_& m) {
                 auto p = as_vec3(point, "point");
                 py::array_t<int32_t> out(3);
                 int32_t idx[3];
-                locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_voxel(g, p.data(), idx); });
+                locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_voxel(idx, g, p.data()); });
                 std::memcpy(out.mutable_data(), idx, sizeof(idx));
                 return out;
             },
@@ -127,7 +127,7 @@ void define_voxelgrid(py::module_& m) {
                 const size_t n = (size_t)xyz.shape(0);
                 std::vector<int32_t> inc(n);
                 locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                    return o3d_voxelgrid_check_if_included(g, n ? xyz.data() : nullptr, n, inc.data());
+                    return o3d_voxelgrid_check_if_included(inc.data(), g, n ? xyz.data() : nullptr, n);
                 });
                 py::list out(n);
                 for (size_t i = 0; i < n; ++i) out[i] = py::bool_(inc[i] != 0);

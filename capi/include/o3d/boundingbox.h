@@ -11,8 +11,6 @@
 #define O3D_BOUNDINGBOX_H
 
 #include "o3d/common.h"
-#include "o3d/pointcloud.h"
-#include "o3d/trianglemesh.h"
 
 O3D_BEGIN_DECL
 
@@ -33,26 +31,14 @@ O3D_API o3d_status o3d_obb_create_from_points(o3d_obb_t* out, const double* xyz,
 O3D_API o3d_status o3d_obb_create_from_axis_aligned_bounding_box(o3d_obb_t* out, const double min_bound[3],
                                                                  const double max_bound[3]);
 /** @brief The 8 corners (row-major 8 x 3) in Open3D's get_box_points order. */
-O3D_API o3d_status o3d_obb_get_box_points(const o3d_obb_t* obb, double out[24]);
+O3D_API o3d_status o3d_obb_get_box_points(double out[24], const o3d_obb_t* obb);
 /**
  * @brief Indices (ascending, int32) of the `n` points inside the box (boundary included), with the
  * copy-out convention of the point-cloud tools (capacity = n always fits).
  * @see get_point_indices_within_bounding_box
  */
-O3D_API o3d_status o3d_obb_get_point_indices_within(const o3d_obb_t* obb, const double* xyz, size_t n,
-                                                    int32_t* out_indices, size_t capacity, size_t* out_n);
-/** @brief Oriented box of a cloud's points. @see PointCloud.get_oriented_bounding_box(robust) */
-O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_box(const o3d_pointcloud_t* pc, int32_t robust,
-                                                            o3d_obb_t* out);
-/** @brief Oriented box of a mesh's vertices. @see TriangleMesh.get_oriented_bounding_box(robust) */
-O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(const o3d_trianglemesh_t* mesh, int32_t robust,
-                                                              o3d_obb_t* out);
-/** @brief New cloud with the points inside `obb` (outside when invert != 0). @see PointCloud.crop */
-O3D_API o3d_status o3d_pointcloud_crop_obb(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, const o3d_obb_t* obb,
-                                           int32_t invert);
-/** @brief Triangles whose three vertices lie inside `obb` (unused vertices dropped). @see TriangleMesh.crop */
-O3D_API o3d_status o3d_trianglemesh_crop_obb(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
-                                             const o3d_obb_t* obb);
+O3D_API o3d_status o3d_obb_get_point_indices_within(int32_t* out_indices, size_t capacity, size_t* out_n,
+                                                    const o3d_obb_t* obb, const double* xyz, size_t n);
 
 O3D_END_DECL
 

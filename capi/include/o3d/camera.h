@@ -12,6 +12,7 @@
 #define O3D_CAMERA_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 
 O3D_BEGIN_DECL
 
@@ -31,17 +32,16 @@ typedef struct o3d_pinhole_intrinsic {
 /** @brief Fill `out` with one of Open3D's PinholeCameraIntrinsicParameters presets. */
 O3D_API o3d_status o3d_pinhole_intrinsic_set_preset(o3d_pinhole_intrinsic_t* out, int32_t preset);
 
-typedef struct o3d_camera_trajectory o3d_camera_trajectory_t;
 
 /** @brief New empty trajectory. */
 O3D_API o3d_status o3d_camera_trajectory_create(o3d_camera_trajectory_t** out);
 /** @brief Destroy. NULL is a no-op. */
 O3D_API void o3d_camera_trajectory_destroy(o3d_camera_trajectory_t* trajectory);
 /** @brief Number of camera poses. */
-O3D_API o3d_status o3d_camera_trajectory_size(const o3d_camera_trajectory_t* trajectory, size_t* out_n);
+O3D_API o3d_status o3d_camera_trajectory_size(size_t* out_n, const o3d_camera_trajectory_t* trajectory);
 /** @brief Intrinsic and extrinsic of pose `index` (either output may be NULL). Out of range → error. */
-O3D_API o3d_status o3d_camera_trajectory_get(const o3d_camera_trajectory_t* trajectory, size_t index,
-                                             o3d_pinhole_intrinsic_t* out_intrinsic, double out_extrinsic[16]);
+O3D_API o3d_status o3d_camera_trajectory_get(o3d_pinhole_intrinsic_t* out_intrinsic, double out_extrinsic[16],
+                                             const o3d_camera_trajectory_t* trajectory, size_t index);
 /** @brief Append a pose. The extrinsic's last row must be (0, 0, 0, 1). */
 O3D_API o3d_status o3d_camera_trajectory_append(o3d_camera_trajectory_t* trajectory,
                                                 const o3d_pinhole_intrinsic_t* intrinsic,

@@ -113,10 +113,17 @@ O3D_API void o3d_buffer_destroy(o3d_buffer_t* buffer);
 /**
  * @brief Borrowed view of the bytes. **Ownership:** valid until o3d_buffer_destroy.
  */
-O3D_API o3d_status o3d_buffer_view(const o3d_buffer_t* buffer, const uint8_t** out_data, size_t* out_size);
+O3D_API o3d_status o3d_buffer_view(const uint8_t** out_data, size_t* out_size, const o3d_buffer_t* buffer);
 /** @brief Copy the bytes into `out` (capacity bytes); `*out_size` gets the size. NULL `out` queries it. */
-O3D_API o3d_status o3d_buffer_get_data(const o3d_buffer_t* buffer, uint8_t* out, size_t capacity,
-                                       size_t* out_size);
+O3D_API o3d_status o3d_buffer_get_data(uint8_t* out, size_t capacity, size_t* out_size, const o3d_buffer_t* buffer);
+
+/* ---- Random numbers ---- */
+
+/**
+ * @brief Seed the global generator that randomized calls draw from when they are not given a seed
+ * (RANSAC, FGR). Without it the generator starts from a random device. @see o3d.utility.random.seed
+ */
+O3D_API o3d_status o3d_random_seed(uint64_t seed);
 
 O3D_END_DECL
 

@@ -12,12 +12,11 @@
 #define O3D_FEATURE_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 #include "o3d/kdtree.h"
-#include "o3d/pointcloud.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_feature o3d_feature_t;
 
 /** @brief A `dimension` x `num` feature, all zeros. Both may be 0. */
 O3D_API o3d_status o3d_feature_create(o3d_feature_t** out, size_t dimension, size_t num);
@@ -32,19 +31,48 @@ O3D_API void o3d_feature_destroy(o3d_feature_t* feature);
 /** @brief Deep copy. */
 O3D_API o3d_status o3d_feature_clone(o3d_feature_t** out, const o3d_feature_t* feature);
 /** @brief Descriptor length (33 for FPFH). */
-O3D_API o3d_status o3d_feature_dimension(const o3d_feature_t* feature, size_t* out);
+O3D_API o3d_status o3d_feature_dimension(size_t* out, const o3d_feature_t* feature);
 /** @brief Number of descriptors (points). */
-O3D_API o3d_status o3d_feature_num(const o3d_feature_t* feature, size_t* out);
+O3D_API o3d_status o3d_feature_num(size_t* out, const o3d_feature_t* feature);
 /** @brief Resize to `dimension` x `num`; Open3D's Feature.resize. Kept values stay where they were
  *  when `dimension` is unchanged; new values are zero. */
 O3D_API o3d_status o3d_feature_resize(o3d_feature_t* feature, size_t dimension, size_t num);
+/* ---- Arrays: the same functions for every geometry (docs/conventions.md, "Arrays") ----
+ * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
+ * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
+ * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+#define O3D_FEATURE_DATA 0 /**< num x dimension float64: row i is the descriptor of point i; set_array keeps the dimension */
+
 /**
- * @brief Borrowed, writable view of the `dimension * num` doubles (NULL when empty).
- * **Ownership:** valid until the feature is resized or destroyed.
+ * @brief Whether array `which` counts (Open3D's has_*: present and of the matching size).
+ * @param out receives 1 or 0. @param feature the feature. @param which the array.
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
  */
-O3D_API o3d_status o3d_feature_data(o3d_feature_t* feature, double** out_data);
-/** @brief Copy the `dimension * num` doubles into `out` (capacity doubles). */
-O3D_API o3d_status o3d_feature_get_data(const o3d_feature_t* feature, double* out, size_t capacity);
+O3D_API o3d_status o3d_feature_has_array(int32_t* out, const o3d_feature_t* feature, int32_t which);
+/**
+ * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
+ */
+O3D_API o3d_status o3d_feature_set_array(o3d_feature_t* feature, int32_t which, const double* data, size_t rows);
+/** @brief As o3d_feature_set_array from float32 values, converted in the one copy. */
+O3D_API o3d_status o3d_feature_set_array_f32(o3d_feature_t* feature, int32_t which, const float* data, size_t rows);
+/**
+ * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
+ * needed. `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity < rows,
+ * O3D_ERROR_INVALID_ARGUMENT on a NULL handle or out_rows or an unknown `which`.
+ */
+O3D_API o3d_status o3d_feature_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_feature_t* feature,
+                                         int32_t which);
+/**
+ * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
+ * **Ownership:** the library's; valid until the next mutating call on `feature` or its destruction.
+ */
+O3D_API o3d_status o3d_feature_array_view(const double** out_data, size_t* out_rows, const o3d_feature_t* feature,
+                                          int32_t which);
+/** @brief Borrowed writable view of array `which`: as o3d_feature_array_view; writing through it is a mutating call. */
+O3D_API o3d_status o3d_feature_array_mutable_view(double** out_data, size_t* out_rows, o3d_feature_t* feature,
+                                                  int32_t which);
+
 /**
  * @brief The descriptors of points `indices` (in that order), or of every other point when invert != 0
  * (ascending). An index out of range is an error.
@@ -73,36 +101,12 @@ O3D_API o3d_status o3d_compute_fpfh_feature(o3d_feature_t** out, const o3d_point
  * `*out_n` always gets the count. Dimensions must agree. num_threads 0 = default.
  * @see o3d.pipelines.registration.correspondences_from_features
  */
-O3D_API o3d_status o3d_correspondences_from_features(const o3d_feature_t* source, const o3d_feature_t* target,
+O3D_API o3d_status o3d_correspondences_from_features(int32_t* out, size_t capacity, size_t* out_n,
+                                                     const o3d_feature_t* source, const o3d_feature_t* target,
                                                      int32_t mutual_filter, double mutual_consistency_ratio,
-                                                     int32_t num_threads, int32_t* out, size_t capacity,
-                                                     size_t* out_n);
+                                                     int32_t num_threads);
 
-/**
- * @brief Read a feature file in Open3D's binary layout: int32 dimension, int32 num, then num x dimension
- * float64 (descriptor by descriptor). Truncated or inconsistent files → O3D_ERROR_PARSE.
- */
-O3D_API o3d_status o3d_io_read_feature(o3d_feature_t** out, const char* path);
-/** @brief Write `feature` in the layout o3d_io_read_feature reads. */
-O3D_API o3d_status o3d_io_write_feature(const char* path, const o3d_feature_t* feature);
 
-/**
- * @brief A KD-tree over the descriptors of `feature` (copied), of dimension o3d_feature_dimension.
- * @see o3d.geometry.KDTreeFlann(feature)
- */
-O3D_API o3d_status o3d_kdtree_create_from_feature(o3d_kdtree_t** out, const o3d_feature_t* feature);
-/** @brief A KD-tree over `n` points of `dimension` doubles each (row by row, copied). */
-O3D_API o3d_status o3d_kdtree_create_from_points_xd(o3d_kdtree_t** out, const double* data, size_t dimension,
-                                                    size_t n);
-/** @brief Dimension of the indexed points (3 for trees over clouds). */
-O3D_API o3d_status o3d_kdtree_dimension(const o3d_kdtree_t* tree, size_t* out);
-/**
- * @brief As o3d_kdtree_search for a tree of any dimension: `queries` holds `num_queries` rows of
- * `dimension` doubles, which must equal the tree's. @see KDTreeFlann.search_knn_vector_xd
- */
-O3D_API o3d_status o3d_kdtree_search_xd(const o3d_kdtree_t* tree, const double* queries, size_t num_queries,
-                                        size_t dimension, const o3d_search_param_t* param, int32_t num_threads,
-                                        o3d_search_result_t** out);
 
 O3D_END_DECL
 

@@ -12,10 +12,10 @@
 #define O3D_IMAGE_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_image o3d_image_t;
 
 /**
  * @brief New zero-filled image. width, height >= 1; num_channels 1, 3 or 4; bytes_per_channel 1 (uint8),
@@ -35,17 +35,43 @@ O3D_API void o3d_image_destroy(o3d_image_t* image);
 /** @brief Deep copy. */
 O3D_API o3d_status o3d_image_clone(o3d_image_t** out, const o3d_image_t* src);
 
-O3D_API o3d_status o3d_image_width(const o3d_image_t* image, int32_t* out);
-O3D_API o3d_status o3d_image_height(const o3d_image_t* image, int32_t* out);
-O3D_API o3d_status o3d_image_num_channels(const o3d_image_t* image, int32_t* out);
-O3D_API o3d_status o3d_image_bytes_per_channel(const o3d_image_t* image, int32_t* out);
+O3D_API o3d_status o3d_image_width(int32_t* out, const o3d_image_t* image);
+O3D_API o3d_status o3d_image_height(int32_t* out, const o3d_image_t* image);
+O3D_API o3d_status o3d_image_num_channels(int32_t* out, const o3d_image_t* image);
+O3D_API o3d_status o3d_image_bytes_per_channel(int32_t* out, const o3d_image_t* image);
 
-/** @brief Borrowed read-only view of the pixel bytes (`*out_size` bytes). */
-O3D_API o3d_status o3d_image_data_view(const o3d_image_t* image, const uint8_t** out_data, size_t* out_size);
-/** @brief Borrowed writable view of the pixel bytes; writing through it is a mutating call. */
-O3D_API o3d_status o3d_image_data_mutable_view(o3d_image_t* image, uint8_t** out_data, size_t* out_size);
-/** @brief Copy the pixel bytes into `out` (capacity bytes); `*out_size` always gets the size. */
-O3D_API o3d_status o3d_image_get_data(const o3d_image_t* image, uint8_t* out, size_t capacity, size_t* out_size);
+/* ---- Arrays: the same functions for every geometry (docs/conventions.md, "Arrays") ----
+ * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
+ * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
+ * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+#define O3D_IMAGE_DATA 0 /**< the pixels: height x width x channels values of bytes_per_channel bytes, in bytes (one byte a row); set_array needs exactly that many */
+
+/**
+ * @brief Whether array `which` counts (the image has pixels).
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
+ */
+O3D_API o3d_status o3d_image_has_array(int32_t* out, const o3d_image_t* image, int32_t which);
+/**
+ * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
+ */
+O3D_API o3d_status o3d_image_set_array(o3d_image_t* image, int32_t which, const uint8_t* data, size_t rows);
+/**
+ * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
+ * needed. `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity < rows,
+ * O3D_ERROR_INVALID_ARGUMENT on a NULL handle or out_rows or an unknown `which`.
+ */
+O3D_API o3d_status o3d_image_get_array(uint8_t* out, size_t capacity, size_t* out_rows, const o3d_image_t* image,
+                                       int32_t which);
+/**
+ * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
+ * **Ownership:** the library's; valid until the next mutating call on `image` or its destruction.
+ */
+O3D_API o3d_status o3d_image_array_view(const uint8_t** out_data, size_t* out_rows, const o3d_image_t* image,
+                                        int32_t which);
+/** @brief Borrowed writable view of array `which`: as o3d_image_array_view; writing through it is a mutating call. */
+O3D_API o3d_status o3d_image_array_mutable_view(uint8_t** out_data, size_t* out_rows, o3d_image_t* image,
+                                                int32_t which);
 
 #define O3D_IMAGE_FILTER_GAUSSIAN3 0 /**< 3x3 Gaussian */
 #define O3D_IMAGE_FILTER_GAUSSIAN5 1

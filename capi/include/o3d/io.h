@@ -13,9 +13,12 @@
 #define O3D_IO_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 #include "o3d/camera.h"
+#include "o3d/feature.h"
 #include "o3d/image.h"
 #include "o3d/pointcloud.h"
+#include "o3d/posegraph.h"
 #include "o3d/trianglemesh.h"
 
 O3D_BEGIN_DECL
@@ -111,11 +114,11 @@ O3D_API o3d_status o3d_io_write_image_to_memory(o3d_buffer_t** out, const o3d_im
 /* ---- Camera models: Open3D's JSON layouts; trajectories also as .log ---- */
 
 /** @brief Read a PinholeCameraIntrinsic JSON file. @see o3d.io.read_pinhole_camera_intrinsic */
-O3D_API o3d_status o3d_io_read_pinhole_camera_intrinsic(const char* path, o3d_pinhole_intrinsic_t* out);
+O3D_API o3d_status o3d_io_read_pinhole_camera_intrinsic(o3d_pinhole_intrinsic_t* out, const char* path);
 O3D_API o3d_status o3d_io_write_pinhole_camera_intrinsic(const char* path, const o3d_pinhole_intrinsic_t* intrinsic);
 /** @brief Read a PinholeCameraParameters JSON file (either output may be NULL). */
-O3D_API o3d_status o3d_io_read_pinhole_camera_parameters(const char* path, o3d_pinhole_intrinsic_t* out_intrinsic,
-                                                         double out_extrinsic[16]);
+O3D_API o3d_status o3d_io_read_pinhole_camera_parameters(o3d_pinhole_intrinsic_t* out_intrinsic,
+                                                         double out_extrinsic[16], const char* path);
 O3D_API o3d_status o3d_io_write_pinhole_camera_parameters(const char* path, const o3d_pinhole_intrinsic_t* intrinsic,
                                                           const double extrinsic[16]);
 /**
@@ -127,6 +130,23 @@ O3D_API o3d_status o3d_io_read_pinhole_camera_trajectory(o3d_camera_trajectory_t
 O3D_API o3d_status o3d_io_write_pinhole_camera_trajectory(const char* path,
                                                           const o3d_camera_trajectory_t* trajectory,
                                                           const char* format);
+
+/* ---- Feature files ---- */
+
+/**
+ * @brief Read a feature file in Open3D's binary layout: int32 dimension, int32 num, then num x dimension
+ * float64 (descriptor by descriptor). Truncated or inconsistent files → O3D_ERROR_PARSE.
+ */
+O3D_API o3d_status o3d_io_read_feature(o3d_feature_t** out, const char* path);
+/** @brief Write `feature` in the layout o3d_io_read_feature reads. */
+O3D_API o3d_status o3d_io_write_feature(const char* path, const o3d_feature_t* feature);
+
+/* ---- Pose graphs (Open3D's JSON layout) ---- */
+
+/** @brief Read Open3D's JSON pose graph ("class_name": "PoseGraph"; matrices column-major in the file). */
+O3D_API o3d_status o3d_io_read_pose_graph(o3d_pose_graph_t** out, const char* path);
+/** @brief Write `graph` in Open3D's JSON layout. */
+O3D_API o3d_status o3d_io_write_pose_graph(const char* path, const o3d_pose_graph_t* graph);
 
 O3D_END_DECL
 

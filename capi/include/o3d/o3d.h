@@ -7,6 +7,7 @@
 #define O3D_O3D_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 #include "o3d/pointcloud.h"
 #include "o3d/kdtree.h"
 #include "o3d/io.h"
@@ -18,7 +19,6 @@
 #include "o3d/rgbd.h"
 #include "o3d/trianglemesh.h"
 #include "o3d/boundingbox.h"
-#include "o3d/hull.h"
 #include "o3d/lineset.h"
 #include "o3d/voxelgrid.h"
 #include "o3d/octree.h"

@@ -16,10 +16,13 @@
 #define O3D_POINTCLOUD_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
+#include "o3d/boundingbox.h"
+#include "o3d/camera.h"
+#include "o3d/kdtree.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_pointcloud o3d_pointcloud_t;
 
 /** @brief New empty cloud. @see o3d.geometry.PointCloud() */
 O3D_API o3d_status o3d_pointcloud_create(o3d_pointcloud_t** out);
@@ -29,58 +32,48 @@ O3D_API void o3d_pointcloud_destroy(o3d_pointcloud_t* pc);
 O3D_API o3d_status o3d_pointcloud_clone(o3d_pointcloud_t** out, const o3d_pointcloud_t* src);
 
 /** @brief Number of points. */
-O3D_API o3d_status o3d_pointcloud_size(const o3d_pointcloud_t* pc, size_t* out_n);
-/** @brief 1 if the cloud has points, else 0. */
-O3D_API o3d_status o3d_pointcloud_has_points(const o3d_pointcloud_t* pc, int32_t* out);
-/** @brief 1 if the cloud has one normal per point, else 0. */
-O3D_API o3d_status o3d_pointcloud_has_normals(const o3d_pointcloud_t* pc, int32_t* out);
-/** @brief 1 if the cloud has one color per point, else 0. */
-O3D_API o3d_status o3d_pointcloud_has_colors(const o3d_pointcloud_t* pc, int32_t* out);
-/** @brief Remove points, normals and colors. */
+O3D_API o3d_status o3d_pointcloud_size(size_t* out_n, const o3d_pointcloud_t* pc);
+/** @brief Remove points, normals, colors and covariances. @return O3D_ERROR_INVALID_ARGUMENT on NULL. */
 O3D_API o3d_status o3d_pointcloud_clear(o3d_pointcloud_t* pc);
 
-/**
- * @brief Replace the points with `n` rows of `xyz` (copied once). `xyz` may be NULL when n == 0.
- * Normals and colors are kept as they are (Open3D semantics: they count only when their size matches).
- */
-O3D_API o3d_status o3d_pointcloud_set_points(o3d_pointcloud_t* pc, const double* xyz, size_t n);
-/** @brief As o3d_pointcloud_set_points, from float32 input (converted in the single copy). */
-O3D_API o3d_status o3d_pointcloud_set_points_f32(o3d_pointcloud_t* pc, const float* xyz, size_t n);
-O3D_API o3d_status o3d_pointcloud_set_normals(o3d_pointcloud_t* pc, const double* xyz, size_t n);
-O3D_API o3d_status o3d_pointcloud_set_normals_f32(o3d_pointcloud_t* pc, const float* xyz, size_t n);
-/** @brief Colors as RGB in [0,1]. */
-O3D_API o3d_status o3d_pointcloud_set_colors(o3d_pointcloud_t* pc, const double* rgb, size_t n);
-O3D_API o3d_status o3d_pointcloud_set_colors_f32(o3d_pointcloud_t* pc, const float* rgb, size_t n);
+/* ---- Arrays: the same functions for every geometry (docs/conventions.md, "Arrays") ----
+ * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
+ * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
+ * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+#define O3D_POINTCLOUD_POINTS 0 /**< N x 3 float64 */
+#define O3D_POINTCLOUD_NORMALS 1 /**< N x 3, one per point */
+#define O3D_POINTCLOUD_COLORS 2 /**< N x 3 RGB in [0,1], one per point */
+#define O3D_POINTCLOUD_COVARIANCES 3 /**< N x 9, a row-major symmetric 3x3 per point (set_array rejects asymmetric ones) */
 
 /**
- * @brief Copy the points into `out` (room for `capacity` rows). `*out_n` always gets the count.
- * With `out` NULL only the count is reported. @return O3D_ERROR_BUFFER_TOO_SMALL if capacity < count.
+ * @brief Whether array `which` counts (Open3D's has_*: present and of the matching size).
+ * @param out receives 1 or 0. @param pc the pointcloud. @param which the array.
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
  */
-O3D_API o3d_status o3d_pointcloud_get_points(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                             size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_get_normals(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                              size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_get_colors(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                             size_t* out_n);
-
+O3D_API o3d_status o3d_pointcloud_has_array(int32_t* out, const o3d_pointcloud_t* pc, int32_t which);
 /**
- * @brief Borrowed read-only view of the points (`*out_n` rows of 3 doubles; NULL when empty).
- * **Ownership:** borrowed; valid until the next mutating call on `pc` or its destruction.
+ * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
  */
-O3D_API o3d_status o3d_pointcloud_points_view(const o3d_pointcloud_t* pc, const double** out_data,
-                                              size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_normals_view(const o3d_pointcloud_t* pc, const double** out_data,
-                                               size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_colors_view(const o3d_pointcloud_t* pc, const double** out_data,
-                                              size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_set_array(o3d_pointcloud_t* pc, int32_t which, const double* data, size_t rows);
+/** @brief As o3d_pointcloud_set_array from float32 values, converted in the one copy. */
+O3D_API o3d_status o3d_pointcloud_set_array_f32(o3d_pointcloud_t* pc, int32_t which, const float* data, size_t rows);
 /**
- * @brief Borrowed writable view of the points, for in-place edits (numpy `np.asarray(pcd.points)`).
- * **Ownership:** as o3d_pointcloud_points_view. Writing through it is a mutating call.
+ * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
+ * needed. `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity < rows,
+ * O3D_ERROR_INVALID_ARGUMENT on a NULL handle or out_rows or an unknown `which`.
  */
-O3D_API o3d_status o3d_pointcloud_points_mutable_view(o3d_pointcloud_t* pc, double** out_data, size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_normals_mutable_view(o3d_pointcloud_t* pc, double** out_data,
-                                                       size_t* out_n);
-O3D_API o3d_status o3d_pointcloud_colors_mutable_view(o3d_pointcloud_t* pc, double** out_data, size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_pointcloud_t* pc,
+                                            int32_t which);
+/**
+ * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
+ * **Ownership:** the library's; valid until the next mutating call on `pc` or its destruction.
+ */
+O3D_API o3d_status o3d_pointcloud_array_view(const double** out_data, size_t* out_rows, const o3d_pointcloud_t* pc,
+                                             int32_t which);
+/** @brief Borrowed writable view of array `which`: as o3d_pointcloud_array_view; writing through it is a mutating call. */
+O3D_API o3d_status o3d_pointcloud_array_mutable_view(double** out_data, size_t* out_rows, o3d_pointcloud_t* pc,
+                                                     int32_t which);
 
 /**
  * @brief Concatenate `other` onto `pc` (Open3D `pcd += other`): normals/colors survive only when both
@@ -98,13 +91,13 @@ O3D_API o3d_status o3d_pointcloud_rotate(o3d_pointcloud_t* pc, const double rota
 O3D_API o3d_status o3d_pointcloud_scale(o3d_pointcloud_t* pc, double scale, const double center[3]);
 
 /** @brief Component-wise minimum of the points ((0,0,0) for an empty cloud, as Open3D). */
-O3D_API o3d_status o3d_pointcloud_get_min_bound(const o3d_pointcloud_t* pc, double out[3]);
-O3D_API o3d_status o3d_pointcloud_get_max_bound(const o3d_pointcloud_t* pc, double out[3]);
+O3D_API o3d_status o3d_pointcloud_get_min_bound(double out[3], const o3d_pointcloud_t* pc);
+O3D_API o3d_status o3d_pointcloud_get_max_bound(double out[3], const o3d_pointcloud_t* pc);
 /** @brief Mean of the points ((0,0,0) for an empty cloud). */
-O3D_API o3d_status o3d_pointcloud_get_center(const o3d_pointcloud_t* pc, double out[3]);
+O3D_API o3d_status o3d_pointcloud_get_center(double out[3], const o3d_pointcloud_t* pc);
 /** @brief Axis-aligned bounding box as min and max corners. */
-O3D_API o3d_status o3d_pointcloud_get_axis_aligned_bounding_box(const o3d_pointcloud_t* pc, double out_min[3],
-                                                                double out_max[3]);
+O3D_API o3d_status o3d_pointcloud_get_axis_aligned_bounding_box(double out_min[3], double out_max[3],
+                                                                const o3d_pointcloud_t* pc);
 /** @brief Set every color to `rgb` (each in [0,1]). */
 O3D_API o3d_status o3d_pointcloud_paint_uniform_color(o3d_pointcloud_t* pc, const double rgb[3]);
 /** @brief New cloud with the points at `indices` (or all others when invert != 0). Out-of-range → error. */
@@ -132,21 +125,6 @@ O3D_API o3d_status o3d_pointcloud_random_down_sample(o3d_pointcloud_t** out, con
 O3D_API o3d_status o3d_pointcloud_farthest_point_down_sample(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
                                                              size_t num_samples, size_t start_index);
 
-/** Kinds of neighbourhood search (o3d.geometry.KDTreeSearchParam*). */
-#define O3D_SEARCH_KNN 0    /**< the `knn` nearest points */
-#define O3D_SEARCH_RADIUS 1 /**< all points within `radius` */
-#define O3D_SEARCH_HYBRID 2 /**< at most `knn` nearest points within `radius` */
-
-/** Neighbourhood search parameter (KDTreeSearchParamKNN / Radius / Hybrid). */
-typedef struct o3d_search_param {
-    uint32_t struct_size; /**< sizeof(o3d_search_param_t), set by o3d_search_param_init */
-    int32_t kind;         /**< O3D_SEARCH_KNN, O3D_SEARCH_RADIUS or O3D_SEARCH_HYBRID; default KNN */
-    int32_t knn;          /**< neighbour count for KNN / HYBRID; default 30 */
-    double radius;        /**< radius for RADIUS / HYBRID [units of the cloud]; default 0 */
-} o3d_search_param_t;
-
-/** @brief Fill defaults (KNN, 30). `struct_size` must be sizeof(o3d_search_param_t) or a smaller, older size. */
-O3D_API o3d_status o3d_search_param_init(o3d_search_param_t* param, uint32_t struct_size);
 
 /**
  * @brief PCA normals over each point's neighbourhood (NULL param: KNN 30). When the cloud already
@@ -165,14 +143,12 @@ O3D_API o3d_status o3d_pointcloud_orient_normals_towards_camera_location(o3d_poi
  * @brief Distance from each point to its nearest other point, into `out` (capacity doubles).
  * `*out_n` always gets N. @return O3D_ERROR_BUFFER_TOO_SMALL if capacity < N.
  */
-O3D_API o3d_status o3d_pointcloud_compute_nearest_neighbor_distance(const o3d_pointcloud_t* pc, double* out,
-                                                                   size_t capacity, size_t* out_n,
-                                                                   int32_t num_threads);
+O3D_API o3d_status o3d_pointcloud_compute_nearest_neighbor_distance(double* out, size_t capacity, size_t* out_n,
+                                                                   const o3d_pointcloud_t* pc, int32_t num_threads);
 /** @brief For each point of `source`, the distance to the closest point of `target`. */
-O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(const o3d_pointcloud_t* source,
-                                                               const o3d_pointcloud_t* target, double* out,
-                                                               size_t capacity, size_t* out_n,
-                                                               int32_t num_threads);
+O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(double* out, size_t capacity, size_t* out_n,
+                                                               const o3d_pointcloud_t* source,
+                                                               const o3d_pointcloud_t* target, int32_t num_threads);
 
 /* ---- Point-cloud tools (o3d.geometry.PointCloud filters, segmentation, statistics) ----
  * Functions that also return indices write them to a caller buffer: `out_indices` holds `capacity`
@@ -185,16 +161,17 @@ O3D_API o3d_status o3d_pointcloud_compute_point_cloud_distance(const o3d_pointcl
  * points is above the cloud's mean of that distance + `std_ratio` standard deviations.
  * Writes the kept cloud to `*out` and the kept indices (ascending). @see remove_statistical_outlier
  */
-O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
-                                                             int32_t nb_neighbors, double std_ratio,
-                                                             int32_t* out_indices, size_t capacity, size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_remove_statistical_outlier(o3d_pointcloud_t** out, int32_t* out_indices,
+                                                             size_t capacity, size_t* out_n,
+                                                             const o3d_pointcloud_t* pc, int32_t nb_neighbors,
+                                                             double std_ratio);
 /**
  * @brief Radius outlier removal: keep points with at least `nb_points` other points within `radius`.
  * Writes the kept cloud and the kept indices (ascending). @see remove_radius_outlier
  */
-O3D_API o3d_status o3d_pointcloud_remove_radius_outlier(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
-                                                        int32_t nb_points, double radius, int32_t* out_indices,
-                                                        size_t capacity, size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_remove_radius_outlier(o3d_pointcloud_t** out, int32_t* out_indices, size_t capacity,
+                                                        size_t* out_n, const o3d_pointcloud_t* pc, int32_t nb_points,
+                                                        double radius);
 /** @brief New cloud with the points inside the box [min_bound, max_bound] (outside when invert != 0). */
 O3D_API o3d_status o3d_pointcloud_crop_aabb(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
                                             const double min_bound[3], const double max_bound[3], int32_t invert);
@@ -203,22 +180,22 @@ O3D_API o3d_status o3d_pointcloud_crop_aabb(o3d_pointcloud_t** out, const o3d_po
  * the inlier indices (ascending) go to `out_indices`. Same seed → same result on any thread count.
  * @see segment_plane
  */
-O3D_API o3d_status o3d_pointcloud_segment_plane(const o3d_pointcloud_t* pc, double distance_threshold,
+O3D_API o3d_status o3d_pointcloud_segment_plane(double out_plane[4], int32_t* out_indices, size_t capacity,
+                                                size_t* out_n, const o3d_pointcloud_t* pc, double distance_threshold,
                                                 int32_t ransac_n, int32_t num_iterations, double probability,
-                                                uint64_t seed, double out_plane[4], int32_t* out_indices,
-                                                size_t capacity, size_t* out_n);
+                                                uint64_t seed);
 /**
  * @brief DBSCAN: one label per point in `out_labels` (capacity values): clusters 0, 1, ... in order of
  * their lowest point index, -1 for noise. `*out_n` gets the point count. @see cluster_dbscan
  */
-O3D_API o3d_status o3d_pointcloud_cluster_dbscan(const o3d_pointcloud_t* pc, double eps, int32_t min_points,
-                                                 int32_t* out_labels, size_t capacity, size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_cluster_dbscan(int32_t* out_labels, size_t capacity, size_t* out_n,
+                                                 const o3d_pointcloud_t* pc, double eps, int32_t min_points);
 /** @brief Mean (3) and covariance (row-major 3x3, divided by N) of the points. Empty cloud → error. */
-O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(const o3d_pointcloud_t* pc, double out_mean[3],
-                                                              double out_covariance[9]);
+O3D_API o3d_status o3d_pointcloud_compute_mean_and_covariance(double out_mean[3], double out_covariance[9],
+                                                              const o3d_pointcloud_t* pc);
 /** @brief Mahalanobis distance of each point to the cloud's distribution, into `out` (capacity doubles). */
-O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(const o3d_pointcloud_t* pc, double* out,
-                                                               size_t capacity, size_t* out_n);
+O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(double* out, size_t capacity, size_t* out_n,
+                                                               const o3d_pointcloud_t* pc);
 
 /* ---- Per-point covariances (o3d.geometry.PointCloud.covariances): N x 9, row-major 3x3 each ----
  * A cloud carries covariances only when their count equals the point count (has_covariances). As in
@@ -227,22 +204,68 @@ O3D_API o3d_status o3d_pointcloud_compute_mahalanobis_distance(const o3d_pointcl
  * remove_non_finite_points), through append and clear, and rotate with transform/rotate (R C R^T);
  * voxel_down_sample, which averages points, drops them. */
 
-/** @brief 1 when the cloud has one covariance per point, else 0. */
-O3D_API o3d_status o3d_pointcloud_has_covariances(const o3d_pointcloud_t* pc, int32_t* out);
-/** @brief Replace the covariances with `n` row-major 3x3 matrices (n x 9 doubles, copied). */
-O3D_API o3d_status o3d_pointcloud_set_covariances(o3d_pointcloud_t* pc, const double* data, size_t n);
-/** @brief Copy the covariances out (capacity matrices; `*out_n` always gets the count). */
-O3D_API o3d_status o3d_pointcloud_get_covariances(const o3d_pointcloud_t* pc, double* out, size_t capacity,
-                                                  size_t* out_n);
-/** @brief Borrowed read-only view of the covariances (n x 9 doubles). */
-O3D_API o3d_status o3d_pointcloud_covariances_view(const o3d_pointcloud_t* pc, const double** out_data,
-                                                   size_t* out_n);
 /**
  * @brief Covariance of each point's neighbourhood (`param`: KNN, radius or hybrid; NULL: KNN 30 as
  * Open3D), divided by the neighbour count; fewer than 3 neighbours give the identity (Open3D).
  * @see PointCloud.estimate_covariances
  */
 O3D_API o3d_status o3d_pointcloud_estimate_covariances(o3d_pointcloud_t* pc, const o3d_search_param_t* param);
+
+/* ---- Convex hull and hidden-point removal (Qhull) ---- */
+
+/**
+ * @brief Convex hull of the points (>= 4, not all coplanar unless joggle_inputs != 0, which makes Qhull
+ * perturb the input ("QJ") so degenerate sets still give a hull). @see PointCloud.compute_convex_hull
+ */
+O3D_API o3d_status o3d_pointcloud_compute_convex_hull(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                      size_t capacity, size_t* out_n, const o3d_pointcloud_t* pc,
+                                                      int32_t joggle_inputs);
+/**
+ * @brief The points visible from `camera_location`: spherical flipping with radius `radius` (> 0,
+ * Open3D's parameter: larger keeps more points) then the convex hull of the flipped points and the camera.
+ * @see PointCloud.hidden_point_removal
+ */
+O3D_API o3d_status o3d_pointcloud_hidden_point_removal(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                       size_t capacity, size_t* out_n, const o3d_pointcloud_t* pc,
+                                                       const double camera_location[3], double radius);
+
+/* ---- Oriented bounding boxes ---- */
+
+/** @brief Oriented box of a cloud's points. @see PointCloud.get_oriented_bounding_box(robust) */
+O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_box(o3d_obb_t* out, const o3d_pointcloud_t* pc, int32_t robust);
+/** @brief New cloud with the points inside `obb` (outside when invert != 0). @see PointCloud.crop */
+O3D_API o3d_status o3d_pointcloud_crop_obb(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, const o3d_obb_t* obb,
+                                           int32_t invert);
+
+/* ---- From depth and RGB-D images ---- */
+
+/** PointCloud.create_from_depth_image keyword arguments. */
+typedef struct o3d_depth_to_cloud_options {
+    uint32_t struct_size;             /**< sizeof(o3d_depth_to_cloud_options_t) */
+    double depth_scale;               /**< raw units per metre for uint16 depth; default 1000 */
+    double depth_trunc;               /**< depths at or beyond this are dropped (metres); default 1000 */
+    int32_t stride;                   /**< use every stride-th pixel in x and y; default 1 */
+    int32_t project_valid_depth_only; /**< 0: invalid pixels give NaN points (organised cloud); default 1 */
+} o3d_depth_to_cloud_options_t;
+
+/** @brief Fill defaults. */
+O3D_API o3d_status o3d_depth_to_cloud_options_init(o3d_depth_to_cloud_options_t* opts, uint32_t struct_size);
+
+/**
+ * @brief Back-project a depth image (uint16 raw or float32 metres; 1 channel) through `intrinsic`, then
+ * to world coordinates with the inverse of `extrinsic` (row-major 4x4 world-to-camera; NULL: identity).
+ * @see PointCloud.create_from_depth_image
+ */
+O3D_API o3d_status o3d_pointcloud_create_from_depth_image(o3d_pointcloud_t** out, const o3d_image_t* depth,
+                                                          const o3d_pinhole_intrinsic_t* intrinsic,
+                                                          const double extrinsic[16],
+                                                          const o3d_depth_to_cloud_options_t* opts);
+/** @brief As create_from_depth_image for an RGB-D image, with per-point colors. */
+O3D_API o3d_status o3d_pointcloud_create_from_rgbd_image(o3d_pointcloud_t** out, const o3d_rgbd_image_t* rgbd,
+                                                         const o3d_pinhole_intrinsic_t* intrinsic,
+                                                         const double extrinsic[16],
+                                                         int32_t project_valid_depth_only);
+
 
 O3D_END_DECL
 

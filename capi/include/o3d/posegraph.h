@@ -15,10 +15,10 @@
 #define O3D_POSEGRAPH_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_pose_graph o3d_pose_graph_t;
 
 /** PoseGraphEdge. */
 typedef struct o3d_pose_graph_edge {
@@ -40,24 +40,20 @@ O3D_API o3d_status o3d_pose_graph_create(o3d_pose_graph_t** out);
 O3D_API void o3d_pose_graph_destroy(o3d_pose_graph_t* graph);
 /** @brief Deep copy. */
 O3D_API o3d_status o3d_pose_graph_clone(o3d_pose_graph_t** out, const o3d_pose_graph_t* graph);
-O3D_API o3d_status o3d_pose_graph_num_nodes(const o3d_pose_graph_t* graph, size_t* out);
-O3D_API o3d_status o3d_pose_graph_num_edges(const o3d_pose_graph_t* graph, size_t* out);
+O3D_API o3d_status o3d_pose_graph_num_nodes(size_t* out, const o3d_pose_graph_t* graph);
+O3D_API o3d_status o3d_pose_graph_num_edges(size_t* out, const o3d_pose_graph_t* graph);
 /** @brief Append a node with `pose` (NULL: identity); must be a finite rigid transform. */
 O3D_API o3d_status o3d_pose_graph_add_node(o3d_pose_graph_t* graph, const double pose[16]);
-O3D_API o3d_status o3d_pose_graph_get_node(const o3d_pose_graph_t* graph, size_t index, double out_pose[16]);
+O3D_API o3d_status o3d_pose_graph_get_node(double out_pose[16], const o3d_pose_graph_t* graph, size_t index);
 O3D_API o3d_status o3d_pose_graph_set_node(o3d_pose_graph_t* graph, size_t index, const double pose[16]);
 /** @brief Append an edge. Node ids are checked by global optimization, not here (Open3D builds edges first). */
 O3D_API o3d_status o3d_pose_graph_add_edge(o3d_pose_graph_t* graph, const o3d_pose_graph_edge_t* edge);
-O3D_API o3d_status o3d_pose_graph_get_edge(const o3d_pose_graph_t* graph, size_t index,
-                                           o3d_pose_graph_edge_t* out_edge);
+O3D_API o3d_status o3d_pose_graph_get_edge(o3d_pose_graph_edge_t* out_edge, const o3d_pose_graph_t* graph,
+                                           size_t index);
 O3D_API o3d_status o3d_pose_graph_set_edge(o3d_pose_graph_t* graph, size_t index, const o3d_pose_graph_edge_t* edge);
 /** @brief Remove every node and edge. */
 O3D_API o3d_status o3d_pose_graph_clear(o3d_pose_graph_t* graph);
 
-/** @brief Read Open3D's JSON pose graph ("class_name": "PoseGraph"; matrices column-major in the file). */
-O3D_API o3d_status o3d_io_read_pose_graph(o3d_pose_graph_t** out, const char* path);
-/** @brief Write `graph` in Open3D's JSON layout. */
-O3D_API o3d_status o3d_io_write_pose_graph(const char* path, const o3d_pose_graph_t* graph);
 
 #define O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON 0        /**< GlobalOptimizationGaussNewton */
 #define O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT 1 /**< GlobalOptimizationLevenbergMarquardt */
@@ -102,8 +98,8 @@ typedef struct o3d_global_optimization_summary {
  * Edge confidences are updated. An edge naming a missing node is an error and leaves `graph` unchanged;
  * so does cancelling from `progress`. `summary` may be NULL.
  */
-O3D_API o3d_status o3d_global_optimization(o3d_pose_graph_t* graph, const o3d_global_optimization_options_t* opts,
-                                           o3d_global_optimization_summary_t* summary);
+O3D_API o3d_status o3d_global_optimization(o3d_global_optimization_summary_t* summary, o3d_pose_graph_t* graph,
+                                           const o3d_global_optimization_options_t* opts);
 
 O3D_END_DECL
 

@@ -13,6 +13,7 @@
 #define O3D_REGISTRATION_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
 #include "o3d/feature.h"
 #include "o3d/pointcloud.h"
 
@@ -58,10 +59,8 @@ typedef struct o3d_icp_options {
 O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct_size);
 
 /** @brief The weight the robust `kernel` (O3D_KERNEL_*) with scale `k` gives to `residual`. @see RobustKernel.weight */
-O3D_API o3d_status o3d_robust_kernel_weight(int32_t kernel, double k, double residual, double* out);
+O3D_API o3d_status o3d_robust_kernel_weight(double* out, int32_t kernel, double k, double residual);
 
-/** Result of a registration: transformation, fitness, inlier_rmse, correspondence_set. */
-typedef struct o3d_registration_result o3d_registration_result_t;
 
 /**
  * @brief Iterative closest point from `source` onto `target`, starting at `init` (NULL: identity), with
@@ -78,26 +77,25 @@ O3D_API o3d_status o3d_evaluate_registration(o3d_registration_result_t** out, co
                                              const o3d_pointcloud_t* target, double max_correspondence_distance,
                                              const double transformation[16]);
 /** @brief The 6x6 information matrix (row-major, 36 doubles) of the correspondences under `transformation`. */
-O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(const o3d_pointcloud_t* source,
+O3D_API o3d_status o3d_get_information_matrix_from_point_clouds(double out[36], const o3d_pointcloud_t* source,
                                                                 const o3d_pointcloud_t* target,
                                                                 double max_correspondence_distance,
-                                                                const double transformation[16], double out[36]);
+                                                                const double transformation[16]);
 
 /** @brief Destroy. NULL is a no-op. */
 O3D_API void o3d_registration_result_destroy(o3d_registration_result_t* result);
 /** @brief Row-major 4x4 transformation. */
-O3D_API o3d_status o3d_registration_result_get_transformation(const o3d_registration_result_t* result,
-                                                              double out[16]);
+O3D_API o3d_status o3d_registration_result_get_transformation(double out[16], const o3d_registration_result_t* result);
 /** @brief Inlier count / number of source points. */
-O3D_API o3d_status o3d_registration_result_get_fitness(const o3d_registration_result_t* result, double* out);
+O3D_API o3d_status o3d_registration_result_get_fitness(double* out, const o3d_registration_result_t* result);
 /** @brief RMS distance of the inlier pairs. */
-O3D_API o3d_status o3d_registration_result_get_inlier_rmse(const o3d_registration_result_t* result, double* out);
+O3D_API o3d_status o3d_registration_result_get_inlier_rmse(double* out, const o3d_registration_result_t* result);
 /**
  * @brief Copy the correspondences as (source index, target index) pairs: `out` holds `capacity` pairs
  * (2 * capacity int32). `*out_n` always gets the pair count.
  */
-O3D_API o3d_status o3d_registration_result_get_correspondence_set(const o3d_registration_result_t* result,
-                                                                  int32_t* out, size_t capacity, size_t* out_n);
+O3D_API o3d_status o3d_registration_result_get_correspondence_set(int32_t* out, size_t capacity, size_t* out_n,
+                                                                  const o3d_registration_result_t* result);
 
 /** Correspondence checkers: prune RANSAC hypotheses early (Open3D's CorrespondenceChecker*). */
 #define O3D_CHECKER_EDGE_LENGTH 0 /**< BasedOnEdgeLength(similarity_threshold in (0, 1]; default 0.9) */
@@ -117,10 +115,10 @@ O3D_API o3d_status o3d_correspondence_checker_init(o3d_correspondence_checker_t*
  * @brief Does the hypothesis pass `checker`? `corres` holds `num_corres` (source, target) index pairs;
  * `transformation` (NULL: identity) moves the source. `*out_passed` gets 1 or 0. @see CorrespondenceChecker.Check
  */
-O3D_API o3d_status o3d_correspondence_checker_check(const o3d_correspondence_checker_t* checker,
+O3D_API o3d_status o3d_correspondence_checker_check(int32_t* out_passed, const o3d_correspondence_checker_t* checker,
                                                     const o3d_pointcloud_t* source, const o3d_pointcloud_t* target,
                                                     const int32_t* corres, size_t num_corres,
-                                                    const double transformation[16], int32_t* out_passed);
+                                                    const double transformation[16]);
 
 /** RANSAC options: estimation, ransac_n and RANSACConvergenceCriteria, seed, threads, progress. */
 typedef struct o3d_ransac_options {
@@ -141,11 +139,6 @@ typedef struct o3d_ransac_options {
 /** @brief Fill defaults (Open3D's). */
 O3D_API o3d_status o3d_ransac_options_init(o3d_ransac_options_t* opts, uint32_t struct_size);
 
-/**
- * @brief Seed the global generator that randomized calls draw from when they are not given a seed
- * (RANSAC, FGR). Without it the generator starts from a random device. @see o3d.utility.random.seed
- */
-O3D_API o3d_status o3d_random_seed(uint64_t seed);
 
 /**
  * @brief RANSAC over feature correspondences (nearest target descriptor of each source descriptor, see

@@ -10,14 +10,12 @@
 #ifndef O3D_RGBD_H
 #define O3D_RGBD_H
 
-#include "o3d/camera.h"
 #include "o3d/common.h"
+#include "o3d/types.h"
 #include "o3d/image.h"
-#include "o3d/pointcloud.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_rgbd_image o3d_rgbd_image_t;
 
 /** RGBDImage.create_from_color_and_depth keyword arguments. */
 typedef struct o3d_rgbd_options {
@@ -52,33 +50,6 @@ O3D_API void o3d_rgbd_image_destroy(o3d_rgbd_image_t* rgbd);
 O3D_API o3d_status o3d_rgbd_image_get_color(o3d_image_t** out, const o3d_rgbd_image_t* rgbd);
 /** @brief A copy of the depth image (1-channel float32, metres). */
 O3D_API o3d_status o3d_rgbd_image_get_depth(o3d_image_t** out, const o3d_rgbd_image_t* rgbd);
-
-/** PointCloud.create_from_depth_image keyword arguments. */
-typedef struct o3d_depth_to_cloud_options {
-    uint32_t struct_size;             /**< sizeof(o3d_depth_to_cloud_options_t) */
-    double depth_scale;               /**< raw units per metre for uint16 depth; default 1000 */
-    double depth_trunc;               /**< depths at or beyond this are dropped (metres); default 1000 */
-    int32_t stride;                   /**< use every stride-th pixel in x and y; default 1 */
-    int32_t project_valid_depth_only; /**< 0: invalid pixels give NaN points (organised cloud); default 1 */
-} o3d_depth_to_cloud_options_t;
-
-/** @brief Fill defaults. */
-O3D_API o3d_status o3d_depth_to_cloud_options_init(o3d_depth_to_cloud_options_t* opts, uint32_t struct_size);
-
-/**
- * @brief Back-project a depth image (uint16 raw or float32 metres; 1 channel) through `intrinsic`, then
- * to world coordinates with the inverse of `extrinsic` (row-major 4x4 world-to-camera; NULL: identity).
- * @see PointCloud.create_from_depth_image
- */
-O3D_API o3d_status o3d_pointcloud_create_from_depth_image(o3d_pointcloud_t** out, const o3d_image_t* depth,
-                                                          const o3d_pinhole_intrinsic_t* intrinsic,
-                                                          const double extrinsic[16],
-                                                          const o3d_depth_to_cloud_options_t* opts);
-/** @brief As create_from_depth_image for an RGB-D image, with per-point colors. */
-O3D_API o3d_status o3d_pointcloud_create_from_rgbd_image(o3d_pointcloud_t** out, const o3d_rgbd_image_t* rgbd,
-                                                         const o3d_pinhole_intrinsic_t* intrinsic,
-                                                         const double extrinsic[16],
-                                                         int32_t project_valid_depth_only);
 
 O3D_END_DECL
 

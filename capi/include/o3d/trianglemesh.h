@@ -21,22 +21,13 @@
 #define O3D_TRIANGLEMESH_H
 
 #include "o3d/common.h"
+#include "o3d/types.h"
+#include "o3d/boundingbox.h"
 #include "o3d/image.h"
 #include "o3d/pointcloud.h"
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_trianglemesh o3d_trianglemesh_t;
-
-/* Float64 arrays of a mesh (the `which` of the *_array functions). */
-#define O3D_MESH_VERTICES 0         /**< N x 3 */
-#define O3D_MESH_VERTEX_NORMALS 1   /**< N x 3 */
-#define O3D_MESH_VERTEX_COLORS 2    /**< N x 3, RGB in [0,1] */
-#define O3D_MESH_TRIANGLE_NORMALS 3 /**< M x 3 */
-#define O3D_MESH_TRIANGLE_UVS 4     /**< 3M x 2 */
-/* Int32 arrays of a mesh (the `which` of the *_index_array functions). */
-#define O3D_MESH_TRIANGLES 100             /**< M x 3 vertex indices */
-#define O3D_MESH_TRIANGLE_MATERIAL_IDS 101 /**< M x 1, index into the textures */
 
 /* ---- Container ---- */
 
@@ -49,45 +40,64 @@ O3D_API o3d_status o3d_trianglemesh_clone(o3d_trianglemesh_t** out, const o3d_tr
 /** @brief Remove everything (arrays and textures). */
 O3D_API o3d_status o3d_trianglemesh_clear(o3d_trianglemesh_t* mesh);
 /** @brief Number of vertices. */
-O3D_API o3d_status o3d_trianglemesh_num_vertices(const o3d_trianglemesh_t* mesh, size_t* out_n);
+O3D_API o3d_status o3d_trianglemesh_num_vertices(size_t* out_n, const o3d_trianglemesh_t* mesh);
 /** @brief Number of triangles. */
-O3D_API o3d_status o3d_trianglemesh_num_triangles(const o3d_trianglemesh_t* mesh, size_t* out_n);
-/**
- * @brief 1 when the array `which` (O3D_MESH_*) is present with the right row count, else 0
- * (has_vertices, has_vertex_normals, ..., has_triangle_uvs, has_triangle_material_ids).
- */
-O3D_API o3d_status o3d_trianglemesh_has_array(const o3d_trianglemesh_t* mesh, int32_t which, int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trianglemesh_t* mesh);
+/* ---- Arrays: the same functions for every geometry (docs/conventions.md, "Arrays") ----
+ * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
+ * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
+ * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+#define O3D_MESH_VERTICES 0 /**< N x 3 float64 */
+#define O3D_MESH_VERTEX_NORMALS 1 /**< N x 3 */
+#define O3D_MESH_VERTEX_COLORS 2 /**< N x 3, RGB in [0,1] */
+#define O3D_MESH_TRIANGLE_NORMALS 3 /**< M x 3 */
+#define O3D_MESH_TRIANGLE_UVS 4 /**< 3M x 2, three rows per triangle in corner order */
+#define O3D_MESH_TRIANGLES 100 /**< M x 3 int32 vertex indices */
+#define O3D_MESH_TRIANGLE_MATERIAL_IDS 101 /**< M x 1 int32, index into the textures */
 
-/** @brief Replace the float64 array `which` with `rows` rows of `data` (copied once; NULL when rows == 0). */
-O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t which, const double* data,
-                                              size_t rows);
 /**
- * @brief Copy the float64 array `which` into `out` (room for `capacity` rows). `*out_rows` always gets
- * the row count; `out` NULL only queries it. @return O3D_ERROR_BUFFER_TOO_SMALL if capacity < rows.
+ * @brief Whether array `which` counts (Open3D's has_*: present and of the matching size).
+ * @param out receives 1 or 0. @param mesh the trianglemesh. @param which the array.
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
  */
-O3D_API o3d_status o3d_trianglemesh_get_array(const o3d_trianglemesh_t* mesh, int32_t which, double* out,
-                                              size_t capacity, size_t* out_rows);
-/** @brief Borrowed read-only view of the float64 array `which` (NULL when empty). */
-O3D_API o3d_status o3d_trianglemesh_array_view(const o3d_trianglemesh_t* mesh, int32_t which,
-                                               const double** out_data, size_t* out_rows);
-/** @brief Borrowed writable view of the float64 array `which`; writing through it is a mutating call. */
-O3D_API o3d_status o3d_trianglemesh_array_mutable_view(o3d_trianglemesh_t* mesh, int32_t which, double** out_data,
-                                                       size_t* out_rows);
-/** @brief Replace the int32 array `which` (O3D_MESH_TRIANGLES or O3D_MESH_TRIANGLE_MATERIAL_IDS). */
-O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, int32_t which, const int32_t* data,
-                                                    size_t rows);
-/** @brief Copy the int32 array `which` into `out`, with the copy-out convention of get_array. */
-O3D_API o3d_status o3d_trianglemesh_get_index_array(const o3d_trianglemesh_t* mesh, int32_t which, int32_t* out,
-                                                    size_t capacity, size_t* out_rows);
-/** @brief Borrowed read-only view of the int32 array `which`. */
-O3D_API o3d_status o3d_trianglemesh_index_array_view(const o3d_trianglemesh_t* mesh, int32_t which,
-                                                     const int32_t** out_data, size_t* out_rows);
-/** @brief Borrowed writable view of the int32 array `which`. */
-O3D_API o3d_status o3d_trianglemesh_index_array_mutable_view(o3d_trianglemesh_t* mesh, int32_t which,
-                                                             int32_t** out_data, size_t* out_rows);
+O3D_API o3d_status o3d_trianglemesh_has_array(int32_t* out, const o3d_trianglemesh_t* mesh, int32_t which);
+/**
+ * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
+ * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
+ */
+O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t which, const double* data, size_t rows);
+/** @brief As o3d_trianglemesh_set_array from float32 values, converted in the one copy. */
+O3D_API o3d_status o3d_trianglemesh_set_array_f32(o3d_trianglemesh_t* mesh, int32_t which, const float* data, size_t rows);
+/**
+ * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
+ * needed. `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity < rows,
+ * O3D_ERROR_INVALID_ARGUMENT on a NULL handle or out_rows or an unknown `which`.
+ */
+O3D_API o3d_status o3d_trianglemesh_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_trianglemesh_t* mesh,
+                                              int32_t which);
+/**
+ * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
+ * **Ownership:** the library's; valid until the next mutating call on `mesh` or its destruction.
+ */
+O3D_API o3d_status o3d_trianglemesh_array_view(const double** out_data, size_t* out_rows, const o3d_trianglemesh_t* mesh,
+                                               int32_t which);
+/** @brief Borrowed writable view of array `which`: as o3d_trianglemesh_array_view; writing through it is a mutating call. */
+O3D_API o3d_status o3d_trianglemesh_array_mutable_view(double** out_data, size_t* out_rows, o3d_trianglemesh_t* mesh,
+                                                       int32_t which);
+/** @brief Replace int32 array `which` with `rows` rows of `data` (copied once), as o3d_trianglemesh_set_array. */
+O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, int32_t which, const int32_t* data, size_t rows);
+/** @brief Copy int32 array `which` out, with the copy-out rules of o3d_trianglemesh_get_array. */
+O3D_API o3d_status o3d_trianglemesh_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
+                                                    const o3d_trianglemesh_t* mesh, int32_t which);
+/** @brief Borrowed read-only view of int32 array `which` (ownership as o3d_trianglemesh_array_view). */
+O3D_API o3d_status o3d_trianglemesh_index_array_view(const int32_t** out_data, size_t* out_rows,
+                                                     const o3d_trianglemesh_t* mesh, int32_t which);
+/** @brief Borrowed writable view of int32 array `which`; writing through it is a mutating call. */
+O3D_API o3d_status o3d_trianglemesh_index_array_mutable_view(int32_t** out_data, size_t* out_rows,
+                                                             o3d_trianglemesh_t* mesh, int32_t which);
 
 /** @brief Number of texture images. */
-O3D_API o3d_status o3d_trianglemesh_texture_count(const o3d_trianglemesh_t* mesh, size_t* out_n);
+O3D_API o3d_status o3d_trianglemesh_texture_count(size_t* out_n, const o3d_trianglemesh_t* mesh);
 /** @brief Copy of texture `index` as a new image (caller destroys it). */
 O3D_API o3d_status o3d_trianglemesh_get_texture(o3d_image_t** out, const o3d_trianglemesh_t* mesh, size_t index);
 /** @brief Append a copy of `image` to the textures. */
@@ -119,12 +129,12 @@ O3D_API o3d_status o3d_trianglemesh_rotate(o3d_trianglemesh_t* mesh, const doubl
 /** @brief Scale about `center` (NULL: the mesh's center). */
 O3D_API o3d_status o3d_trianglemesh_scale(o3d_trianglemesh_t* mesh, double scale, const double center[3]);
 /** @brief Component-wise minimum of the vertices ((0,0,0) when empty). */
-O3D_API o3d_status o3d_trianglemesh_get_min_bound(const o3d_trianglemesh_t* mesh, double out[3]);
-O3D_API o3d_status o3d_trianglemesh_get_max_bound(const o3d_trianglemesh_t* mesh, double out[3]);
+O3D_API o3d_status o3d_trianglemesh_get_min_bound(double out[3], const o3d_trianglemesh_t* mesh);
+O3D_API o3d_status o3d_trianglemesh_get_max_bound(double out[3], const o3d_trianglemesh_t* mesh);
 /** @brief Mean of the vertices ((0,0,0) when empty). */
-O3D_API o3d_status o3d_trianglemesh_get_center(const o3d_trianglemesh_t* mesh, double out[3]);
-O3D_API o3d_status o3d_trianglemesh_get_axis_aligned_bounding_box(const o3d_trianglemesh_t* mesh,
-                                                                  double out_min[3], double out_max[3]);
+O3D_API o3d_status o3d_trianglemesh_get_center(double out[3], const o3d_trianglemesh_t* mesh);
+O3D_API o3d_status o3d_trianglemesh_get_axis_aligned_bounding_box(double out_min[3], double out_max[3],
+                                                                  const o3d_trianglemesh_t* mesh);
 
 /* ---- Clean-up (in place; each keeps the attributes of what it keeps) ---- */
 
@@ -144,33 +154,33 @@ O3D_API o3d_status o3d_trianglemesh_merge_close_vertices(o3d_trianglemesh_t* mes
 /* ---- Queries ---- */
 
 /** @brief Sum of the triangle areas. */
-O3D_API o3d_status o3d_trianglemesh_get_surface_area(const o3d_trianglemesh_t* mesh, double* out);
+O3D_API o3d_status o3d_trianglemesh_get_surface_area(double* out, const o3d_trianglemesh_t* mesh);
 /** @brief Enclosed volume; a mesh that is not watertight and orientable fails with INVALID_ARGUMENT. */
-O3D_API o3d_status o3d_trianglemesh_get_volume(const o3d_trianglemesh_t* mesh, double* out);
+O3D_API o3d_status o3d_trianglemesh_get_volume(double* out, const o3d_trianglemesh_t* mesh);
 /** @brief Edge- and vertex-manifold, no boundary edges, not self-intersecting. */
-O3D_API o3d_status o3d_trianglemesh_is_watertight(const o3d_trianglemesh_t* mesh, int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_is_watertight(int32_t* out, const o3d_trianglemesh_t* mesh);
 /** @brief Every edge in one or two triangles (only two when allow_boundary_edges == 0). */
-O3D_API o3d_status o3d_trianglemesh_is_edge_manifold(const o3d_trianglemesh_t* mesh, int32_t allow_boundary_edges,
-                                                     int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_is_edge_manifold(int32_t* out, const o3d_trianglemesh_t* mesh,
+                                                     int32_t allow_boundary_edges);
 /** @brief The triangles around every vertex form one fan. */
-O3D_API o3d_status o3d_trianglemesh_is_vertex_manifold(const o3d_trianglemesh_t* mesh, int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_is_vertex_manifold(int32_t* out, const o3d_trianglemesh_t* mesh);
 /** @brief Some two triangles that share no vertex intersect. */
-O3D_API o3d_status o3d_trianglemesh_is_self_intersecting(const o3d_trianglemesh_t* mesh, int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_is_self_intersecting(int32_t* out, const o3d_trianglemesh_t* mesh);
 /** @brief The triangles can be oriented consistently. */
-O3D_API o3d_status o3d_trianglemesh_is_orientable(const o3d_trianglemesh_t* mesh, int32_t* out);
+O3D_API o3d_status o3d_trianglemesh_is_orientable(int32_t* out, const o3d_trianglemesh_t* mesh);
 /** @brief V - E + F. */
-O3D_API o3d_status o3d_trianglemesh_euler_poincare_characteristic(const o3d_trianglemesh_t* mesh, int64_t* out);
+O3D_API o3d_status o3d_trianglemesh_euler_poincare_characteristic(int64_t* out, const o3d_trianglemesh_t* mesh);
 /**
  * @brief Edge-connected components. `out_triangle_clusters` gets each triangle's cluster (numbered by
  * lowest triangle index), `out_cluster_n_triangles` and `out_cluster_area` each cluster's size and area.
  * All three buffers hold `capacity` values (num_triangles always fits); any may be NULL to skip it.
  * `*out_num_triangles` and `*out_num_clusters` always get the counts.
  */
-O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(const o3d_trianglemesh_t* mesh,
-                                                                int32_t* out_triangle_clusters,
+O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(int32_t* out_triangle_clusters,
                                                                 int32_t* out_cluster_n_triangles,
                                                                 double* out_cluster_area, size_t capacity,
-                                                                size_t* out_num_triangles, size_t* out_num_clusters);
+                                                                size_t* out_num_triangles, size_t* out_num_clusters,
+                                                                const o3d_trianglemesh_t* mesh);
 
 /* ---- Processing (each writes a new mesh or cloud) ---- */
 
@@ -266,6 +276,22 @@ O3D_API o3d_status o3d_trianglemesh_create_coordinate_frame(o3d_trianglemesh_t**
 O3D_API o3d_status o3d_trianglemesh_create_tetrahedron(o3d_trianglemesh_t** out, double radius);
 O3D_API o3d_status o3d_trianglemesh_create_octahedron(o3d_trianglemesh_t** out, double radius);
 O3D_API o3d_status o3d_trianglemesh_create_icosahedron(o3d_trianglemesh_t** out, double radius);
+
+/* ---- Convex hull (Qhull) ---- */
+
+/** @brief Convex hull of a mesh's vertices. @see TriangleMesh.compute_convex_hull */
+O3D_API o3d_status o3d_trianglemesh_compute_convex_hull(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
+                                                        size_t capacity, size_t* out_n,
+                                                        const o3d_trianglemesh_t* mesh, int32_t joggle_inputs);
+
+/* ---- Oriented bounding boxes ---- */
+
+/** @brief Oriented box of a mesh's vertices. @see TriangleMesh.get_oriented_bounding_box(robust) */
+O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(o3d_obb_t* out, const o3d_trianglemesh_t* mesh,
+                                                              int32_t robust);
+/** @brief Triangles whose three vertices lie inside `obb` (unused vertices dropped). @see TriangleMesh.crop */
+O3D_API o3d_status o3d_trianglemesh_crop_obb(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
+                                             const o3d_obb_t* obb);
 
 O3D_END_DECL
 

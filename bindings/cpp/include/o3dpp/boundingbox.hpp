@@ -43,7 +43,7 @@ struct OrientedBoundingBox {
         const o3d_obb_t c = to_c();
         std::array<Vec3, 8> out{};
         static_assert(sizeof(out) == 24 * sizeof(double), "std::array<Vec3, 8> must be 24 packed doubles");
-        check(o3d_obb_get_box_points(&c, out.front().data()));
+        check(o3d_obb_get_box_points(out.front().data(), &c));
         return out;
     }
     /// @brief Indices (ascending) of the points inside the box, boundary included.
@@ -51,8 +51,8 @@ struct OrientedBoundingBox {
         const o3d_obb_t c = to_c();
         std::vector<int32_t> out(points.size());
         size_t n = 0;
-        check(o3d_obb_get_point_indices_within(&c, points.empty() ? nullptr : points.front().data(), points.size(),
-                                               out.data(), out.size(), &n));
+        check(o3d_obb_get_point_indices_within(out.data(), out.size(), &n, &c,
+                                               points.empty() ? nullptr : points.front().data(), points.size()));
         out.resize(n < out.size() ? n : out.size());
         return out;
     }

@@ -62,14 +62,14 @@ public:
 
     std::size_t size() const {
         size_t n = 0;
-        check(o3d_camera_trajectory_size(get(), &n));
+        check(o3d_camera_trajectory_size(&n, get()));
         return n;
     }
     bool empty() const { return size() == 0; }
     /// @brief Pose `index` (out of range → Error).
     PinholeCameraParameters at(std::size_t index) const {
         PinholeCameraParameters p;
-        check(o3d_camera_trajectory_get(get(), index, &p.intrinsic, p.extrinsic.data()));
+        check(o3d_camera_trajectory_get(&p.intrinsic, p.extrinsic.data(), get(), index));
         return p;
     }
     std::vector<PinholeCameraParameters> parameters() const {

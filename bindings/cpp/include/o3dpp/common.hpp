@@ -91,16 +91,16 @@ public:
     Span<const uint8_t> view() const {
         const uint8_t* data = nullptr;
         size_t size = 0;
-        check(o3d_buffer_view(h_.get(), &data, &size));
+        check(o3d_buffer_view(&data, &size, h_.get()));
         return {data, size};
     }
     std::size_t size() const { return view().size(); }
     /// @brief Copy of the bytes.
     std::vector<uint8_t> to_vector() const {
         size_t n = 0;
-        check(o3d_buffer_get_data(h_.get(), nullptr, 0, &n));
+        check(o3d_buffer_get_data(nullptr, 0, &n, h_.get()));
         std::vector<uint8_t> out(n);
-        check(o3d_buffer_get_data(h_.get(), out.data(), out.size(), &n));
+        check(o3d_buffer_get_data(out.data(), out.size(), &n, h_.get()));
         out.resize(n);
         return out;
     }

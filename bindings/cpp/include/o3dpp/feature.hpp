@@ -60,13 +60,13 @@ public:
     /// @brief Descriptor length (33 for FPFH).
     std::size_t dimension() const {
         size_t d = 0;
-        check(o3d_feature_dimension(get(), &d));
+        check(o3d_feature_dimension(&d, get()));
         return d;
     }
     /// @brief Number of descriptors (points).
     std::size_t num() const {
         size_t n = 0;
-        check(o3d_feature_num(get(), &n));
+        check(o3d_feature_num(&n, get()));
         return n;
     }
     bool empty() const { return num() == 0; }
@@ -74,13 +74,13 @@ public:
     /// @brief Writable view of the dimension() * num() values; valid until resize() or destruction.
     Span<double> data() {
         double* p = nullptr;
-        check(o3d_feature_data(get(), &p));
+        check(o3d_feature_data(&p, get()));
         return {p, p ? dimension() * num() : 0};
     }
     /// @brief Read-only view (same validity). o3d_feature_data only hands out the pointer.
     Span<const double> data() const {
         double* p = nullptr;
-        check(o3d_feature_data(const_cast<o3d_feature_t*>(get()), &p));
+        check(o3d_feature_data(&p, const_cast<o3d_feature_t*>(get())));
         return {p, p ? dimension() * num() : 0};
     }
     /// @brief Descriptor `i` (out of range: Error).
@@ -92,7 +92,7 @@ public:
     /// @brief Copy of the values.
     std::vector<double> get_data() const {
         std::vector<double> out(dimension() * num());
-        check(o3d_feature_get_data(get(), out.data(), out.size()));
+        check(o3d_feature_get_data(out.data(), out.size(), get()));
         return out;
     }
 
@@ -141,9 +141,8 @@ inline std::vector<std::array<int32_t, 2>> correspondences_from_features(const F
     // At most one pair per source descriptor: one call with room for all.
     std::vector<std::array<int32_t, 2>> out(source.num());
     size_t n = 0;
-    check(o3d_correspondences_from_features(source.get(), target.get(), mutual_filter ? 1 : 0,
-                                            mutual_consistency_ratio, num_threads,
-                                            out.empty() ? nullptr : out.front().data(), out.size(), &n));
+    check(o3d_correspondences_from_features(out.empty() ? nullptr : out.front().data(), out.size(), &n, source.get(),
+                                            target.get(), mutual_filter ? 1 : 0, mutual_consistency_ratio, num_threads));
     if (n > out.size()) throw Error(O3D_ERROR_INTERNAL, "o3dpp::correspondences_from_features: too many pairs");
     out.resize(n);
     return out;

@@ -59,9 +59,9 @@ struct CorrespondenceChecker {
                const Mat4& transformation = identity4()) const {
         const o3d_correspondence_checker_t c = to_c();
         int32_t passed = 0;
-        o3dpp::check(o3d_correspondence_checker_check(&c, source.get(), target.get(),
-                                                      corres.empty() ? nullptr : corres.front().data(),
-                                                      corres.size(), transformation.data(), &passed));
+        o3dpp::check(o3d_correspondence_checker_check(&passed, &c, source.get(), target.get(),
+                                                      corres.empty() ? nullptr : corres.front().data(), corres.size(),
+                                                      transformation.data()));
         return passed != 0;
     }
 

@@ -22,8 +22,8 @@ inline std::pair<TriangleMesh, std::vector<int32_t>> compute_convex_hull(const P
     std::vector<int32_t> indices(cloud.size());
     o3d_trianglemesh_t* hull = nullptr;
     size_t n = 0;
-    const o3d_status status = o3d_pointcloud_compute_convex_hull(&hull, cloud.get(), joggle_inputs ? 1 : 0,
-                                                                 indices.data(), indices.size(), &n);
+    const o3d_status status = o3d_pointcloud_compute_convex_hull(&hull, indices.data(), indices.size(), &n,
+                                                                 cloud.get(), joggle_inputs ? 1 : 0);
     return TriangleMesh::adopt_with_indices(status, hull, std::move(indices), n);
 }
 
@@ -41,8 +41,8 @@ inline std::pair<TriangleMesh, std::vector<int32_t>> hidden_point_removal(const 
     std::vector<int32_t> indices(cloud.size());
     o3d_trianglemesh_t* mesh = nullptr;
     size_t n = 0;
-    const o3d_status status = o3d_pointcloud_hidden_point_removal(&mesh, cloud.get(), camera_location.data(), radius,
-                                                                  indices.data(), indices.size(), &n);
+    const o3d_status status = o3d_pointcloud_hidden_point_removal(&mesh, indices.data(), indices.size(), &n,
+                                                                  cloud.get(), camera_location.data(), radius);
     return TriangleMesh::adopt_with_indices(status, mesh, std::move(indices), n);
 }
 

@@ -76,21 +76,21 @@ public:
     Span<const uint8_t> data() const {
         const uint8_t* d = nullptr;
         size_t n = 0;
-        check(o3d_image_data_view(get(), &d, &n));
+        check(o3d_image_array_view(&d, &n, get(), O3D_IMAGE_DATA));
         return {d, n};
     }
     Span<uint8_t> data_mutable() {
         uint8_t* d = nullptr;
         size_t n = 0;
-        check(o3d_image_data_mutable_view(get(), &d, &n));
+        check(o3d_image_array_mutable_view(&d, &n, get(), O3D_IMAGE_DATA));
         return {d, n};
     }
     /// @brief Copy of the pixel bytes.
     std::vector<uint8_t> to_bytes() const {
         size_t n = 0;
-        check(o3d_image_get_data(get(), nullptr, 0, &n));
+        check(o3d_image_get_array(nullptr, 0, &n, get(), O3D_IMAGE_DATA));
         std::vector<uint8_t> out(n);
-        check(o3d_image_get_data(get(), out.data(), out.size(), &n));
+        check(o3d_image_get_array(out.data(), out.size(), &n, get(), O3D_IMAGE_DATA));
         out.resize(n);
         return out;
     }

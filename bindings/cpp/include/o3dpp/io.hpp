@@ -182,7 +182,7 @@ inline Buffer write_image_to_memory(const Image& image, const std::string& forma
 
 inline PinholeIntrinsic read_pinhole_camera_intrinsic(const std::string& path) {
     PinholeIntrinsic k;
-    check(o3d_io_read_pinhole_camera_intrinsic(path.c_str(), &k));
+    check(o3d_io_read_pinhole_camera_intrinsic(&k, path.c_str()));
     return k;
 }
 inline void write_pinhole_camera_intrinsic(const std::string& path, const PinholeIntrinsic& intrinsic) {
@@ -190,7 +190,7 @@ inline void write_pinhole_camera_intrinsic(const std::string& path, const Pinhol
 }
 inline PinholeCameraParameters read_pinhole_camera_parameters(const std::string& path) {
     PinholeCameraParameters p;
-    check(o3d_io_read_pinhole_camera_parameters(path.c_str(), &p.intrinsic, p.extrinsic.data()));
+    check(o3d_io_read_pinhole_camera_parameters(&p.intrinsic, p.extrinsic.data(), path.c_str()));
     return p;
 }
 inline void write_pinhole_camera_parameters(const std::string& path, const PinholeCameraParameters& parameters) {

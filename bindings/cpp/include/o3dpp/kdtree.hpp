@@ -56,17 +56,17 @@ public:
     // Copies.
     std::vector<int64_t> get_offsets() const {
         std::vector<int64_t> out(num_queries() + 1);
-        check(o3d_search_result_get_offsets(get(), out.data(), out.size()));
+        check(o3d_search_result_get_offsets(out.data(), out.size(), get()));
         return out;
     }
     std::vector<int32_t> get_indices() const {
         std::vector<int32_t> out(total());
-        check(o3d_search_result_get_indices(get(), out.data(), out.size()));
+        check(o3d_search_result_get_indices(out.data(), out.size(), get()));
         return out;
     }
     std::vector<double> get_distances2() const {
         std::vector<double> out(total());
-        check(o3d_search_result_get_distances2(get(), out.data(), out.size()));
+        check(o3d_search_result_get_distances2(out.data(), out.size(), get()));
         return out;
     }
 
@@ -78,12 +78,12 @@ private:
     };
     std::array<std::size_t, 2> counts() const {
         std::array<std::size_t, 2> c{};
-        check(o3d_search_result_counts(get(), &c[0], &c[1]));
+        check(o3d_search_result_counts(&c[0], &c[1], get()));
         return c;
     }
     View view() const {
         View v;
-        check(o3d_search_result_view(get(), &v.offsets, &v.indices, &v.distances2));
+        check(o3d_search_result_view(&v.offsets, &v.indices, &v.distances2, get()));
         return v;
     }
     void check_query(std::size_t i) const {
@@ -132,7 +132,7 @@ public:
 
     std::size_t size() const {
         size_t n = 0;
-        check(o3d_kdtree_size(get(), &n));
+        check(o3d_kdtree_size(&n, get()));
         return n;
     }
 
@@ -141,14 +141,14 @@ public:
                         int num_threads = 0) const {
         const o3d_search_param_t c = param.to_c();
         o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search(get(), queries, num_queries, &c, num_threads, &r));
+        check(o3d_kdtree_search(&r, get(), queries, num_queries, &c, num_threads));
         return SearchResult(r);
     }
     SearchResult search(const float* queries, std::size_t num_queries, const SearchParam& param,
                         int num_threads = 0) const {
         const o3d_search_param_t c = param.to_c();
         o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search_f32(get(), queries, num_queries, &c, num_threads, &r));
+        check(o3d_kdtree_search_f32(&r, get(), queries, num_queries, &c, num_threads));
         return SearchResult(r);
     }
     SearchResult search(const std::vector<Vec3>& queries, const SearchParam& param, int num_threads = 0) const {
@@ -168,7 +168,7 @@ public:
     /// @brief Dimension of the indexed points (3 for trees over clouds).
     std::size_t dimension() const {
         size_t d = 0;
-        check(o3d_kdtree_dimension(get(), &d));
+        check(o3d_kdtree_dimension(&d, get()));
         return d;
     }
     /// @brief Batch search of `num_queries` rows of `dimension` doubles (the tree's dimension).
@@ -177,7 +177,7 @@ public:
                            const SearchParam& param, int num_threads = 0) const {
         const o3d_search_param_t c = param.to_c();
         o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search_xd(get(), queries, num_queries, dimension, &c, num_threads, &r));
+        check(o3d_kdtree_search_xd(&r, get(), queries, num_queries, dimension, &c, num_threads));
         return SearchResult(r);
     }
     /// @brief As above with `queries.size() / dimension` rows.

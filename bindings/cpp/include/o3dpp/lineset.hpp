@@ -60,14 +60,14 @@ public:
     Rows3<const double> colors() const { return view(O3D_LINESET_COLORS); }
 
     void set_lines(const std::vector<Line>& lines) {
-        check(o3d_lineset_set_lines(get(), lines.empty() ? nullptr : lines.front().data(), lines.size()));
+        check(o3d_lineset_set_index_array(get(), O3D_LINESET_LINES, lines.empty() ? nullptr : lines.front().data(), lines.size()));
     }
     std::vector<Line> get_lines() const {
         static_assert(sizeof(Line) == 2 * sizeof(int32_t), "Line must be 2 packed ints");
         size_t n = 0;
-        check(o3d_lineset_get_lines(get(), nullptr, 0, &n));
+        check(o3d_lineset_get_index_array(nullptr, 0, &n, get(), O3D_LINESET_LINES));
         std::vector<Line> out(n);
-        check(o3d_lineset_get_lines(get(), n ? out.front().data() : nullptr, n, &n));
+        check(o3d_lineset_get_index_array(n ? out.front().data() : nullptr, n, &n, get(), O3D_LINESET_LINES));
         out.resize(n);
         return out;
     }
@@ -75,7 +75,7 @@ public:
     Span<const int32_t> lines() const {
         const int32_t* d = nullptr;
         size_t n = 0;
-        check(o3d_lineset_lines_view(get(), &d, &n));
+        check(o3d_lineset_index_array_view(&d, &n, get(), O3D_LINESET_LINES));
         return {d, 2 * n};
     }
 
@@ -132,16 +132,16 @@ private:
     }
     std::vector<Vec3> get_rows(int32_t which) const {
         size_t n = 0;
-        check(o3d_lineset_get_array(get(), which, nullptr, 0, &n));
+        check(o3d_lineset_get_array(nullptr, 0, &n, get(), which));
         std::vector<Vec3> out(n);
-        check(o3d_lineset_get_array(get(), which, n ? out.front().data() : nullptr, n, &n));
+        check(o3d_lineset_get_array(n ? out.front().data() : nullptr, n, &n, get(), which));
         out.resize(n);
         return out;
     }
     Rows3<const double> view(int32_t which) const {
         const double* d = nullptr;
         size_t n = 0;
-        check(o3d_lineset_array_view(get(), which, &d, &n));
+        check(o3d_lineset_array_view(&d, &n, get(), which));
         return {d, n};
     }
 

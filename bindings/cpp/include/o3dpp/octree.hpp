@@ -58,22 +58,22 @@ public:
     }
     Vec3 origin() const {
         Vec3 v{};
-        check(o3d_octree_get_root(get(), v.data(), nullptr, nullptr));
+        check(o3d_octree_get_root(v.data(), nullptr, nullptr, get()));
         return v;
     }
     double size() const {
         double v = 0.0;
-        check(o3d_octree_get_root(get(), nullptr, &v, nullptr));
+        check(o3d_octree_get_root(nullptr, &v, nullptr, get()));
         return v;
     }
     int max_depth() const {
         int32_t v = 0;
-        check(o3d_octree_get_root(get(), nullptr, nullptr, &v));
+        check(o3d_octree_get_root(nullptr, nullptr, &v, get()));
         return v;
     }
     std::size_t num_leaf_nodes() const {
         size_t n = 0;
-        check(o3d_octree_num_leaf_nodes(get(), &n));
+        check(o3d_octree_num_leaf_nodes(&n, get()));
         return n;
     }
     /// @brief The leaf containing `point`; empty when it is outside the root or in an empty cell.
@@ -82,11 +82,11 @@ public:
         o3d_octree_node_info_t info{};
         OctreeLeaf leaf;
         size_t n = 0;
-        check(o3d_octree_locate_leaf_node(get(), point.data(), &found, &info, leaf.color.data(), nullptr, 0, &n));
+        check(o3d_octree_locate_leaf_node(&found, &info, leaf.color.data(), nullptr, 0, &n, get(), point.data()));
         if (!found) return std::nullopt;
         leaf.indices.resize(n);
-        check(o3d_octree_locate_leaf_node(get(), point.data(), &found, &info, leaf.color.data(), leaf.indices.data(),
-                                          leaf.indices.size(), &n));
+        check(o3d_octree_locate_leaf_node(&found, &info, leaf.color.data(), leaf.indices.data(), leaf.indices.size(),
+                                          &n, get(), point.data()));
         leaf.indices.resize(n < leaf.indices.size() ? n : leaf.indices.size());
         leaf.info = OctreeNodeInfo{{info.origin[0], info.origin[1], info.origin[2]}, info.size, info.depth,
                                    info.child_index};

@@ -70,7 +70,7 @@ public:
 
     std::size_t size() const {
         size_t n = 0;
-        check(o3d_pointcloud_size(get(), &n));
+        check(o3d_pointcloud_size(&n, get()));
         return n;
     }
     bool empty() const { return size() == 0; }
@@ -80,16 +80,16 @@ public:
     void clear() { check(o3d_pointcloud_clear(get())); }
 
     // --- setters: copied once; float input is converted in that copy ---
-    void set_points(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_points(get(), xyz, n)); }
-    void set_points(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_points_f32(get(), xyz, n)); }
+    void set_points(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_array(get(), O3D_POINTCLOUD_POINTS, xyz, n)); }
+    void set_points(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_array_f32(get(), O3D_POINTCLOUD_POINTS, xyz, n)); }
     void set_points(const std::vector<Vec3>& v) { set_points(flat(v), v.size()); }
     void set_points(const std::vector<std::array<float, 3>>& v) { set_points(flat(v), v.size()); }
-    void set_normals(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_normals(get(), xyz, n)); }
-    void set_normals(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_normals_f32(get(), xyz, n)); }
+    void set_normals(const double* xyz, std::size_t n) { check(o3d_pointcloud_set_array(get(), O3D_POINTCLOUD_NORMALS, xyz, n)); }
+    void set_normals(const float* xyz, std::size_t n) { check(o3d_pointcloud_set_array_f32(get(), O3D_POINTCLOUD_NORMALS, xyz, n)); }
     void set_normals(const std::vector<Vec3>& v) { set_normals(flat(v), v.size()); }
     void set_normals(const std::vector<std::array<float, 3>>& v) { set_normals(flat(v), v.size()); }
-    void set_colors(const double* rgb, std::size_t n) { check(o3d_pointcloud_set_colors(get(), rgb, n)); }
-    void set_colors(const float* rgb, std::size_t n) { check(o3d_pointcloud_set_colors_f32(get(), rgb, n)); }
+    void set_colors(const double* rgb, std::size_t n) { check(o3d_pointcloud_set_array(get(), O3D_POINTCLOUD_COLORS, rgb, n)); }
+    void set_colors(const float* rgb, std::size_t n) { check(o3d_pointcloud_set_array_f32(get(), O3D_POINTCLOUD_COLORS, rgb, n)); }
     void set_colors(const std::vector<Vec3>& v) { set_colors(flat(v), v.size()); }
     void set_colors(const std::vector<std::array<float, 3>>& v) { set_colors(flat(v), v.size()); }
 
@@ -146,7 +146,7 @@ public:
     /// @brief {min corner, max corner}.
     std::array<Vec3, 2> get_axis_aligned_bounding_box() const {
         std::array<Vec3, 2> box{};
-        check(o3d_pointcloud_get_axis_aligned_bounding_box(get(), box[0].data(), box[1].data()));
+        check(o3d_pointcloud_get_axis_aligned_bounding_box(box[0].data(), box[1].data(), get()));
         return box;
     }
     PointCloud& paint_uniform_color(const Vec3& rgb) {
@@ -199,19 +199,18 @@ public:
     }
     std::vector<double> compute_nearest_neighbor_distance(int num_threads = 0) const {
         size_t n = 0;
-        check(o3d_pointcloud_compute_nearest_neighbor_distance(get(), nullptr, 0, &n, num_threads));
+        check(o3d_pointcloud_compute_nearest_neighbor_distance(nullptr, 0, &n, get(), num_threads));
         std::vector<double> out(n);
-        check(o3d_pointcloud_compute_nearest_neighbor_distance(get(), out.data(), out.size(), &n, num_threads));
+        check(o3d_pointcloud_compute_nearest_neighbor_distance(out.data(), out.size(), &n, get(), num_threads));
         out.resize(n);
         return out;
     }
     /// @brief For each point of this cloud, the distance to the closest point of `target`.
     std::vector<double> compute_point_cloud_distance(const PointCloud& target, int num_threads = 0) const {
         size_t n = 0;
-        check(o3d_pointcloud_compute_point_cloud_distance(get(), target.get(), nullptr, 0, &n, num_threads));
+        check(o3d_pointcloud_compute_point_cloud_distance(nullptr, 0, &n, get(), target.get(), num_threads));
         std::vector<double> out(n);
-        check(o3d_pointcloud_compute_point_cloud_distance(get(), target.get(), out.data(), out.size(), &n,
-                                                          num_threads));
+        check(o3d_pointcloud_compute_point_cloud_distance(out.data(), out.size(), &n, get(), target.get(), num_threads));
         out.resize(n);
         return out;
     }
@@ -222,14 +221,14 @@ public:
     /// cloud's mean of that distance + `std_ratio` standard deviations. {kept cloud, kept indices (ascending)}.
     std::pair<PointCloud, std::vector<int32_t>> remove_statistical_outlier(int nb_neighbors, double std_ratio) const {
         return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
-            return o3d_pointcloud_remove_statistical_outlier(o, get(), nb_neighbors, std_ratio, idx, cap, n);
+            return o3d_pointcloud_remove_statistical_outlier(o, idx, cap, n, get(), nb_neighbors, std_ratio);
         });
     }
     /// @brief Keep points with at least `nb_points` other points within `radius`.
     /// {kept cloud, kept indices (ascending)}.
     std::pair<PointCloud, std::vector<int32_t>> remove_radius_outlier(int nb_points, double radius) const {
         return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
-            return o3d_pointcloud_remove_radius_outlier(o, get(), nb_points, radius, idx, cap, n);
+            return o3d_pointcloud_remove_radius_outlier(o, idx, cap, n, get(), nb_points, radius);
         });
     }
     /// @brief Points inside the box [min_bound, max_bound], bounds included (outside when `invert`).
@@ -246,7 +245,7 @@ public:
     /// @brief Oriented box of the points (see OrientedBoundingBox::create_from_points).
     OrientedBoundingBox get_oriented_bounding_box(bool robust = false) const {
         o3d_obb_t c{};
-        check(o3d_pointcloud_get_oriented_bounding_box(get(), robust ? 1 : 0, &c));
+        check(o3d_pointcloud_get_oriented_bounding_box(&c, get(), robust ? 1 : 0));
         return OrientedBoundingBox::from_c(c);
     }
     /// @brief RANSAC plane: {(a, b, c, d) with a x + b y + c z + d = 0 and unit (a, b, c), inlier indices
@@ -257,28 +256,28 @@ public:
                                                                          uint64_t seed = 0) const {
         std::pair<std::array<double, 4>, std::vector<int32_t>> out{};
         out.second = indices([&](int32_t* idx, size_t cap, size_t* n) {
-            return o3d_pointcloud_segment_plane(get(), distance_threshold, ransac_n, num_iterations, probability,
-                                                seed, out.first.data(), idx, cap, n);
+            return o3d_pointcloud_segment_plane(out.first.data(), idx, cap, n, get(), distance_threshold, ransac_n,
+                                                num_iterations, probability, seed);
         });
         return out;
     }
     /// @brief DBSCAN labels, one per point: clusters 0, 1, ... in order of their lowest point index, -1 noise.
     std::vector<int32_t> cluster_dbscan(double eps, int min_points) const {
         return indices([&](int32_t* labels, size_t cap, size_t* n) {
-            return o3d_pointcloud_cluster_dbscan(get(), eps, min_points, labels, cap, n);
+            return o3d_pointcloud_cluster_dbscan(labels, cap, n, get(), eps, min_points);
         });
     }
     /// @brief {mean, row-major covariance divided by N}. Empty cloud → Error.
     std::pair<Vec3, Mat3> compute_mean_and_covariance() const {
         std::pair<Vec3, Mat3> out{};
-        check(o3d_pointcloud_compute_mean_and_covariance(get(), out.first.data(), out.second.data()));
+        check(o3d_pointcloud_compute_mean_and_covariance(out.first.data(), out.second.data(), get()));
         return out;
     }
     /// @brief Mahalanobis distance of each point to the cloud's distribution.
     std::vector<double> compute_mahalanobis_distance() const {
         std::vector<double> out(size());
         size_t n = 0;
-        check(o3d_pointcloud_compute_mahalanobis_distance(get(), out.data(), out.size(), &n));
+        check(o3d_pointcloud_compute_mahalanobis_distance(out.data(), out.size(), &n, get()));
         out.resize(n);
         return out;
     }
@@ -287,16 +286,16 @@ public:
 
     /// @brief True when there is one covariance per point.
     bool has_covariances() const { return flag(&o3d_pointcloud_has_covariances); }
-    void set_covariances(const double* data, std::size_t n) { check(o3d_pointcloud_set_covariances(get(), data, n)); }
+    void set_covariances(const double* data, std::size_t n) { check(o3d_pointcloud_set_array(get(), O3D_POINTCLOUD_COVARIANCES, data, n)); }
     void set_covariances(const std::vector<Mat3>& c) {
         set_covariances(c.empty() ? nullptr : c.front().data(), c.size());
     }
     std::vector<Mat3> get_covariances() const {
         static_assert(sizeof(Mat3) == 9 * sizeof(double), "Mat3 must be 9 packed doubles");
         size_t n = 0;
-        check(o3d_pointcloud_get_covariances(get(), nullptr, 0, &n));
+        check(o3d_pointcloud_get_array(nullptr, 0, &n, get(), O3D_POINTCLOUD_COVARIANCES));
         std::vector<Mat3> out(n);
-        check(o3d_pointcloud_get_covariances(get(), n ? out.front().data() : nullptr, n, &n));
+        check(o3d_pointcloud_get_array(n ? out.front().data() : nullptr, n, &n, get(), O3D_POINTCLOUD_COVARIANCES));
         out.resize(n);
         return out;
     }
@@ -304,7 +303,7 @@ public:
     Span<const double> covariances() const {
         const double* data = nullptr;
         size_t n = 0;
-        check(o3d_pointcloud_covariances_view(get(), &data, &n));
+        check(o3d_pointcloud_array_view(&data, &n, get(), O3D_POINTCLOUD_COVARIANCES));
         return {data, 9 * n};
     }
     /// @brief Covariance of each point's neighbourhood (default KNN 30, as Open3D).

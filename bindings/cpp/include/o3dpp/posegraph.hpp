@@ -111,12 +111,12 @@ public:
 
     std::size_t num_nodes() const {
         size_t n = 0;
-        check(o3d_pose_graph_num_nodes(get(), &n));
+        check(o3d_pose_graph_num_nodes(&n, get()));
         return n;
     }
     std::size_t num_edges() const {
         size_t n = 0;
-        check(o3d_pose_graph_num_edges(get(), &n));
+        check(o3d_pose_graph_num_edges(&n, get()));
         return n;
     }
 
@@ -124,7 +124,7 @@ public:
     void add_node(const Mat4& pose = identity4()) { check(o3d_pose_graph_add_node(get(), pose.data())); }
     Mat4 node(std::size_t index) const {
         Mat4 pose{};
-        check(o3d_pose_graph_get_node(get(), index, pose.data()));
+        check(o3d_pose_graph_get_node(pose.data(), get(), index));
         return pose;
     }
     void set_node(std::size_t index, const Mat4& pose) { check(o3d_pose_graph_set_node(get(), index, pose.data())); }
@@ -143,7 +143,7 @@ public:
     }
     PoseGraphEdge edge(std::size_t index) const {
         o3d_pose_graph_edge_t c = PoseGraphEdge().to_c();
-        check(o3d_pose_graph_get_edge(get(), index, &c));
+        check(o3d_pose_graph_get_edge(&c, get(), index));
         return PoseGraphEdge::from_c(c);
     }
     void set_edge(std::size_t index, const PoseGraphEdge& edge) {
@@ -244,7 +244,7 @@ inline GlobalOptimizationSummary global_optimization(PoseGraph& graph, const Glo
     }
     o3d_global_optimization_summary_t s{};
     s.struct_size = sizeof s;
-    detail::check_progress(o3d_global_optimization(graph.get(), &c, &s), ctx);
+    detail::check_progress(o3d_global_optimization(&s, graph.get(), &c), ctx);
     return {s.iterations, s.initial_residual, s.final_residual, s.pruned_edges};
 }
 

@@ -49,7 +49,7 @@ struct RobustKernel {
     /// @brief The weight given to `residual`. @see RobustKernel.weight
     double weight(double residual) const {
         double w = 0;
-        check(o3d_robust_kernel_weight(static_cast<int32_t>(type), k, residual, &w));
+        check(o3d_robust_kernel_weight(&w, static_cast<int32_t>(type), k, residual));
         return w;
     }
 };
@@ -102,25 +102,25 @@ public:
 
     Mat4 transformation() const {
         Mat4 t{};
-        check(o3d_registration_result_get_transformation(get(), t.data()));
+        check(o3d_registration_result_get_transformation(t.data(), get()));
         return t;
     }
     double fitness() const {
         double v = 0;
-        check(o3d_registration_result_get_fitness(get(), &v));
+        check(o3d_registration_result_get_fitness(&v, get()));
         return v;
     }
     double inlier_rmse() const {
         double v = 0;
-        check(o3d_registration_result_get_inlier_rmse(get(), &v));
+        check(o3d_registration_result_get_inlier_rmse(&v, get()));
         return v;
     }
     /// @brief (source index, target index) pairs.
     std::vector<std::array<int32_t, 2>> correspondence_set() const {
         size_t n = 0;
-        check(o3d_registration_result_get_correspondence_set(get(), nullptr, 0, &n));
+        check(o3d_registration_result_get_correspondence_set(nullptr, 0, &n, get()));
         std::vector<std::array<int32_t, 2>> out(n);
-        check(o3d_registration_result_get_correspondence_set(get(), n ? out.front().data() : nullptr, n, &n));
+        check(o3d_registration_result_get_correspondence_set(n ? out.front().data() : nullptr, n, &n, get()));
         out.resize(n);
         return out;
     }
@@ -191,8 +191,8 @@ inline Mat6 get_information_matrix_from_point_clouds(const PointCloud& source, c
                                                      double max_correspondence_distance,
                                                      const Mat4& transformation = identity4()) {
     Mat6 out{};
-    check(o3d_get_information_matrix_from_point_clouds(source.get(), target.get(), max_correspondence_distance,
-                                                       transformation.data(), out.data()));
+    check(o3d_get_information_matrix_from_point_clouds(out.data(), source.get(), target.get(),
+                                                       max_correspondence_distance, transformation.data()));
     return out;
 }
 

@@ -106,13 +106,13 @@ public:
     Rows3<const double> array(MeshArray which) const {
         const double* d = nullptr;
         size_t n = 0;
-        check(o3d_trianglemesh_array_view(get(), static_cast<int32_t>(which), &d, &n));
+        check(o3d_trianglemesh_array_view(&d, &n, get(), static_cast<int32_t>(which)));
         return {d, n};
     }
     Rows3<double> array_mutable(MeshArray which) {
         double* d = nullptr;
         size_t n = 0;
-        check(o3d_trianglemesh_array_mutable_view(get(), static_cast<int32_t>(which), &d, &n));
+        check(o3d_trianglemesh_array_mutable_view(&d, &n, get(), static_cast<int32_t>(which)));
         return {d, n};
     }
     void set_vertices(const std::vector<Vec3>& v) { set_array(MeshArray::Vertices, v); }
@@ -139,7 +139,7 @@ public:
     Span<const double> triangle_uvs() const {
         const double* d = nullptr;
         size_t n = 0;
-        check(o3d_trianglemesh_array_view(get(), O3D_MESH_TRIANGLE_UVS, &d, &n));
+        check(o3d_trianglemesh_array_view(&d, &n, get(), O3D_MESH_TRIANGLE_UVS));
         return {d, 2 * n};
     }
 
@@ -152,14 +152,14 @@ public:
     Rows3<const int32_t> triangles() const {
         const int32_t* d = nullptr;
         size_t n = 0;
-        check(o3d_trianglemesh_index_array_view(get(), O3D_MESH_TRIANGLES, &d, &n));
+        check(o3d_trianglemesh_index_array_view(&d, &n, get(), O3D_MESH_TRIANGLES));
         return {d, n};
     }
     /// @brief Writable triangles; indices are re-checked by every operation that follows them.
     Rows3<int32_t> triangles_mutable() {
         int32_t* d = nullptr;
         size_t n = 0;
-        check(o3d_trianglemesh_index_array_mutable_view(get(), O3D_MESH_TRIANGLES, &d, &n));
+        check(o3d_trianglemesh_index_array_mutable_view(&d, &n, get(), O3D_MESH_TRIANGLES));
         return {d, n};
     }
     void set_triangle_material_ids(const std::vector<int32_t>& ids) {
@@ -231,7 +231,7 @@ public:
     Vec3 get_center() const { return vec3(&o3d_trianglemesh_get_center); }
     std::array<Vec3, 2> get_axis_aligned_bounding_box() const {
         std::array<Vec3, 2> box{};
-        check(o3d_trianglemesh_get_axis_aligned_bounding_box(get(), box[0].data(), box[1].data()));
+        check(o3d_trianglemesh_get_axis_aligned_bounding_box(box[0].data(), box[1].data(), get()));
         return box;
     }
 
@@ -253,7 +253,7 @@ public:
     bool is_watertight() const { return flag(&o3d_trianglemesh_is_watertight); }
     bool is_edge_manifold(bool allow_boundary_edges = true) const {
         int32_t v = 0;
-        check(o3d_trianglemesh_is_edge_manifold(get(), allow_boundary_edges ? 1 : 0, &v));
+        check(o3d_trianglemesh_is_edge_manifold(&v, get(), allow_boundary_edges ? 1 : 0));
         return v != 0;
     }
     bool is_vertex_manifold() const { return flag(&o3d_trianglemesh_is_vertex_manifold); }
@@ -261,16 +261,15 @@ public:
     bool is_orientable() const { return flag(&o3d_trianglemesh_is_orientable); }
     int64_t euler_poincare_characteristic() const {
         int64_t v = 0;
-        check(o3d_trianglemesh_euler_poincare_characteristic(get(), &v));
+        check(o3d_trianglemesh_euler_poincare_characteristic(&v, get()));
         return v;
     }
     TriangleClusters cluster_connected_triangles() const {
         const std::size_t cap = num_triangles();
         TriangleClusters c{std::vector<int32_t>(cap), std::vector<int32_t>(cap), std::vector<double>(cap)};
         size_t n_tri = 0, n_clusters = 0;
-        check(o3d_trianglemesh_cluster_connected_triangles(get(), c.triangle_clusters.data(),
-                                                           c.cluster_n_triangles.data(), c.cluster_area.data(), cap,
-                                                           &n_tri, &n_clusters));
+        check(o3d_trianglemesh_cluster_connected_triangles(c.triangle_clusters.data(), c.cluster_n_triangles.data(),
+                                                           c.cluster_area.data(), cap, &n_tri, &n_clusters, get()));
         c.triangle_clusters.resize(n_tri < cap ? n_tri : cap);
         c.cluster_n_triangles.resize(n_clusters < cap ? n_clusters : cap);
         c.cluster_area.resize(n_clusters < cap ? n_clusters : cap);
@@ -348,7 +347,7 @@ public:
     /// @brief Oriented box of the vertices.
     OrientedBoundingBox get_oriented_bounding_box(bool robust = false) const {
         o3d_obb_t c{};
-        check(o3d_trianglemesh_get_oriented_bounding_box(get(), robust ? 1 : 0, &c));
+        check(o3d_trianglemesh_get_oriented_bounding_box(&c, get(), robust ? 1 : 0));
         return OrientedBoundingBox::from_c(c);
     }
     /// @brief Convex hull of the vertices: {hull (outward triangles), per hull vertex the index of its vertex}.
@@ -356,8 +355,8 @@ public:
         std::vector<int32_t> indices(num_vertices());
         o3d_trianglemesh_t* hull = nullptr;
         size_t n = 0;
-        const o3d_status status = o3d_trianglemesh_compute_convex_hull(&hull, get(), joggle_inputs ? 1 : 0,
-                                                                       indices.data(), indices.size(), &n);
+        const o3d_status status = o3d_trianglemesh_compute_convex_hull(&hull, indices.data(), indices.size(), &n,
+                                                                       get(), joggle_inputs ? 1 : 0);
         return adopt_with_indices(status, hull, std::move(indices), n);
     }
 
@@ -427,7 +426,7 @@ public:
 private:
     bool has(int32_t which) const {
         int32_t v = 0;
-        check(o3d_trianglemesh_has_array(get(), which, &v));
+        check(o3d_trianglemesh_has_array(&v, get(), which));
         return v != 0;
     }
     std::size_t count(o3d_status (*fn)(const o3d_trianglemesh_t*, size_t*)) const {
@@ -466,10 +465,10 @@ private:
         return out;
     }
     void query_rows(int32_t which, double* out, size_t cap, size_t* n) const {
-        check(o3d_trianglemesh_get_array(get(), which, out, cap, n));
+        check(o3d_trianglemesh_get_array(out, cap, n, get(), which));
     }
     void query_rows(int32_t which, int32_t* out, size_t cap, size_t* n) const {
-        check(o3d_trianglemesh_get_index_array(get(), which, out, cap, n));
+        check(o3d_trianglemesh_get_index_array(out, cap, n, get(), which));
     }
 
     UniqueHandle<o3d_trianglemesh_t, &o3d_trianglemesh_destroy> h_;

@@ -61,27 +61,27 @@ public:
 
     double voxel_size() const {
         double v = 0.0;
-        check(o3d_voxelgrid_get_voxel_size(get(), &v));
+        check(o3d_voxelgrid_get_voxel_size(&v, get()));
         return v;
     }
     Vec3 origin() const {
         Vec3 v{};
-        check(o3d_voxelgrid_get_origin(get(), v.data()));
+        check(o3d_voxelgrid_get_origin(v.data(), get()));
         return v;
     }
     std::size_t num_voxels() const {
         size_t n = 0;
-        check(o3d_voxelgrid_num_voxels(get(), &n));
+        check(o3d_voxelgrid_num_voxels(&n, get()));
         return n;
     }
     /// @brief The occupied cells, sorted by grid index.
     std::vector<Voxel> get_voxels() const {
         size_t n = 0;
-        check(o3d_voxelgrid_get_voxels(get(), nullptr, nullptr, 0, &n));
+        check(o3d_voxelgrid_get_voxels(nullptr, nullptr, 0, &n, get()));
         std::vector<GridIndex> index(n);
         std::vector<Vec3> color(n);
-        check(o3d_voxelgrid_get_voxels(get(), n ? index.front().data() : nullptr, n ? color.front().data() : nullptr,
-                                       n, &n));
+        check(o3d_voxelgrid_get_voxels(n ? index.front().data() : nullptr, n ? color.front().data() : nullptr, n, &n,
+                                       get()));
         std::vector<Voxel> out(n < index.size() ? n : index.size());
         for (std::size_t i = 0; i < out.size(); ++i) out[i] = Voxel{index[i], color[i]};
         return out;
@@ -89,14 +89,14 @@ public:
     /// @brief Grid index of the cell containing `point` (occupied or not).
     GridIndex get_voxel(const Vec3& point) const {
         GridIndex out{};
-        check(o3d_voxelgrid_get_voxel(get(), point.data(), out.data()));
+        check(o3d_voxelgrid_get_voxel(out.data(), get(), point.data()));
         return out;
     }
     /// @brief For each query point, whether its cell is occupied.
     std::vector<bool> check_if_included(const std::vector<Vec3>& queries) const {
         std::vector<int32_t> flags(queries.size());
-        check(o3d_voxelgrid_check_if_included(get(), queries.empty() ? nullptr : queries.front().data(),
-                                              queries.size(), flags.data()));
+        check(o3d_voxelgrid_check_if_included(flags.data(), get(), queries.empty() ? nullptr : queries.front().data(),
+                                              queries.size()));
         return std::vector<bool>(flags.begin(), flags.end());
     }
 

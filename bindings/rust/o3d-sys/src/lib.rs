@@ -73,7 +73,7 @@ extern "C" {
     pub fn o3d_get_num_threads() -> i32;
 
     pub fn o3d_buffer_destroy(buffer: *mut o3d_buffer_t);
-    pub fn o3d_buffer_view(buffer: *const o3d_buffer_t, out_data: *mut *const u8, out_size: *mut usize) -> o3d_status;
+    pub fn o3d_buffer_view(out_data: *mut *const u8, out_size: *mut usize, buffer: *const o3d_buffer_t) -> o3d_status;
     pub fn o3d_buffer_get_data(
         buffer: *const o3d_buffer_t,
         out: *mut u8,
@@ -114,10 +114,10 @@ extern "C" {
     pub fn o3d_pointcloud_destroy(pc: *mut o3d_pointcloud_t);
     pub fn o3d_pointcloud_clone(out: *mut *mut o3d_pointcloud_t, src: *const o3d_pointcloud_t) -> o3d_status;
 
-    pub fn o3d_pointcloud_size(pc: *const o3d_pointcloud_t, out_n: *mut usize) -> o3d_status;
-    pub fn o3d_pointcloud_has_points(pc: *const o3d_pointcloud_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_pointcloud_has_normals(pc: *const o3d_pointcloud_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_pointcloud_has_colors(pc: *const o3d_pointcloud_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_pointcloud_size(out_n: *mut usize, pc: *const o3d_pointcloud_t) -> o3d_status;
+    pub fn o3d_pointcloud_has_points(out: *mut i32, pc: *const o3d_pointcloud_t) -> o3d_status;
+    pub fn o3d_pointcloud_has_normals(out: *mut i32, pc: *const o3d_pointcloud_t) -> o3d_status;
+    pub fn o3d_pointcloud_has_colors(out: *mut i32, pc: *const o3d_pointcloud_t) -> o3d_status;
     pub fn o3d_pointcloud_clear(pc: *mut o3d_pointcloud_t) -> o3d_status;
 
     pub fn o3d_pointcloud_set_points(pc: *mut o3d_pointcloud_t, xyz: *const f64, n: usize) -> o3d_status;
@@ -184,9 +184,9 @@ extern "C" {
     pub fn o3d_pointcloud_rotate(pc: *mut o3d_pointcloud_t, rotation: *const f64, center: *const f64) -> o3d_status;
     pub fn o3d_pointcloud_scale(pc: *mut o3d_pointcloud_t, scale: f64, center: *const f64) -> o3d_status;
 
-    pub fn o3d_pointcloud_get_min_bound(pc: *const o3d_pointcloud_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_pointcloud_get_max_bound(pc: *const o3d_pointcloud_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_pointcloud_get_center(pc: *const o3d_pointcloud_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_pointcloud_get_min_bound(out: *mut f64, pc: *const o3d_pointcloud_t) -> o3d_status;
+    pub fn o3d_pointcloud_get_max_bound(out: *mut f64, pc: *const o3d_pointcloud_t) -> o3d_status;
+    pub fn o3d_pointcloud_get_center(out: *mut f64, pc: *const o3d_pointcloud_t) -> o3d_status;
     pub fn o3d_pointcloud_get_axis_aligned_bounding_box(
         pc: *const o3d_pointcloud_t,
         out_min: *mut f64,
@@ -320,7 +320,7 @@ extern "C" {
     ) -> o3d_status;
 
     // Per-point covariances (N x 9, row-major 3x3 each).
-    pub fn o3d_pointcloud_has_covariances(pc: *const o3d_pointcloud_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_pointcloud_has_covariances(out: *mut i32, pc: *const o3d_pointcloud_t) -> o3d_status;
     pub fn o3d_pointcloud_set_covariances(pc: *mut o3d_pointcloud_t, data: *const f64, n: usize) -> o3d_status;
     pub fn o3d_pointcloud_get_covariances(
         pc: *const o3d_pointcloud_t,
@@ -363,7 +363,7 @@ extern "C" {
     pub fn o3d_kdtree_create_from_pointcloud(out: *mut *mut o3d_kdtree_t, pc: *const o3d_pointcloud_t) -> o3d_status;
     pub fn o3d_kdtree_create_from_points(out: *mut *mut o3d_kdtree_t, xyz: *const f64, n: usize) -> o3d_status;
     pub fn o3d_kdtree_destroy(tree: *mut o3d_kdtree_t);
-    pub fn o3d_kdtree_size(tree: *const o3d_kdtree_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_kdtree_size(out_n: *mut usize, tree: *const o3d_kdtree_t) -> o3d_status;
 
     pub fn o3d_kdtree_search(
         tree: *const o3d_kdtree_t,
@@ -433,11 +433,11 @@ extern "C" {
     ) -> o3d_status;
     pub fn o3d_feature_destroy(feature: *mut o3d_feature_t);
     pub fn o3d_feature_clone(out: *mut *mut o3d_feature_t, feature: *const o3d_feature_t) -> o3d_status;
-    pub fn o3d_feature_dimension(feature: *const o3d_feature_t, out: *mut usize) -> o3d_status;
-    pub fn o3d_feature_num(feature: *const o3d_feature_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_feature_dimension(out: *mut usize, feature: *const o3d_feature_t) -> o3d_status;
+    pub fn o3d_feature_num(out: *mut usize, feature: *const o3d_feature_t) -> o3d_status;
     pub fn o3d_feature_resize(feature: *mut o3d_feature_t, dimension: usize, num: usize) -> o3d_status;
-    pub fn o3d_feature_data(feature: *mut o3d_feature_t, out_data: *mut *mut f64) -> o3d_status;
-    pub fn o3d_feature_get_data(feature: *const o3d_feature_t, out: *mut f64, capacity: usize) -> o3d_status;
+    pub fn o3d_feature_data(out_data: *mut *mut f64, feature: *mut o3d_feature_t) -> o3d_status;
+    pub fn o3d_feature_get_data(out: *mut f64, capacity: usize, feature: *const o3d_feature_t) -> o3d_status;
     pub fn o3d_feature_select_by_index(
         out: *mut *mut o3d_feature_t,
         feature: *const o3d_feature_t,
@@ -476,7 +476,7 @@ extern "C" {
         dimension: usize,
         n: usize,
     ) -> o3d_status;
-    pub fn o3d_kdtree_dimension(tree: *const o3d_kdtree_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_kdtree_dimension(out: *mut usize, tree: *const o3d_kdtree_t) -> o3d_status;
     pub fn o3d_kdtree_search_xd(
         tree: *const o3d_kdtree_t,
         queries: *const f64,
@@ -619,7 +619,7 @@ extern "C" {
         quality: i32,
     ) -> o3d_status;
 
-    pub fn o3d_io_read_pinhole_camera_intrinsic(path: *const c_char, out: *mut o3d_pinhole_intrinsic_t) -> o3d_status;
+    pub fn o3d_io_read_pinhole_camera_intrinsic(out: *mut o3d_pinhole_intrinsic_t, path: *const c_char) -> o3d_status;
     pub fn o3d_io_write_pinhole_camera_intrinsic(
         path: *const c_char,
         intrinsic: *const o3d_pinhole_intrinsic_t,
@@ -747,7 +747,7 @@ pub type o3d_fgr_options_t = o3d_fgr_options;
 
 extern "C" {
     pub fn o3d_icp_options_init(opts: *mut o3d_icp_options_t, struct_size: u32) -> o3d_status;
-    pub fn o3d_robust_kernel_weight(kernel: i32, k: f64, residual: f64, out: *mut f64) -> o3d_status;
+    pub fn o3d_robust_kernel_weight(out: *mut f64, kernel: i32, k: f64, residual: f64) -> o3d_status;
 
     pub fn o3d_register_icp(
         out: *mut *mut o3d_registration_result_t,
@@ -777,7 +777,7 @@ extern "C" {
         result: *const o3d_registration_result_t,
         out: *mut f64,
     ) -> o3d_status;
-    pub fn o3d_registration_result_get_fitness(result: *const o3d_registration_result_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_registration_result_get_fitness(out: *mut f64, result: *const o3d_registration_result_t) -> o3d_status;
     pub fn o3d_registration_result_get_inlier_rmse(
         result: *const o3d_registration_result_t,
         out: *mut f64,
@@ -918,10 +918,10 @@ extern "C" {
     pub fn o3d_pose_graph_create(out: *mut *mut o3d_pose_graph_t) -> o3d_status;
     pub fn o3d_pose_graph_destroy(graph: *mut o3d_pose_graph_t);
     pub fn o3d_pose_graph_clone(out: *mut *mut o3d_pose_graph_t, graph: *const o3d_pose_graph_t) -> o3d_status;
-    pub fn o3d_pose_graph_num_nodes(graph: *const o3d_pose_graph_t, out: *mut usize) -> o3d_status;
-    pub fn o3d_pose_graph_num_edges(graph: *const o3d_pose_graph_t, out: *mut usize) -> o3d_status;
+    pub fn o3d_pose_graph_num_nodes(out: *mut usize, graph: *const o3d_pose_graph_t) -> o3d_status;
+    pub fn o3d_pose_graph_num_edges(out: *mut usize, graph: *const o3d_pose_graph_t) -> o3d_status;
     pub fn o3d_pose_graph_add_node(graph: *mut o3d_pose_graph_t, pose: *const f64) -> o3d_status;
-    pub fn o3d_pose_graph_get_node(graph: *const o3d_pose_graph_t, index: usize, out_pose: *mut f64) -> o3d_status;
+    pub fn o3d_pose_graph_get_node(out_pose: *mut f64, graph: *const o3d_pose_graph_t, index: usize) -> o3d_status;
     pub fn o3d_pose_graph_set_node(graph: *mut o3d_pose_graph_t, index: usize, pose: *const f64) -> o3d_status;
     pub fn o3d_pose_graph_add_edge(graph: *mut o3d_pose_graph_t, edge: *const o3d_pose_graph_edge_t) -> o3d_status;
     pub fn o3d_pose_graph_get_edge(
@@ -991,12 +991,12 @@ extern "C" {
     pub fn o3d_image_destroy(image: *mut o3d_image_t);
     pub fn o3d_image_clone(out: *mut *mut o3d_image_t, src: *const o3d_image_t) -> o3d_status;
 
-    pub fn o3d_image_width(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_image_height(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_image_num_channels(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_image_bytes_per_channel(image: *const o3d_image_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_image_width(out: *mut i32, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_height(out: *mut i32, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_num_channels(out: *mut i32, image: *const o3d_image_t) -> o3d_status;
+    pub fn o3d_image_bytes_per_channel(out: *mut i32, image: *const o3d_image_t) -> o3d_status;
 
-    pub fn o3d_image_data_view(image: *const o3d_image_t, out_data: *mut *const u8, out_size: *mut usize)
+    pub fn o3d_image_data_view(out_data: *mut *const u8, out_size: *mut usize, image: *const o3d_image_t)
         -> o3d_status;
     pub fn o3d_image_data_mutable_view(
         image: *mut o3d_image_t,
@@ -1061,7 +1061,7 @@ extern "C" {
 
     pub fn o3d_camera_trajectory_create(out: *mut *mut o3d_camera_trajectory_t) -> o3d_status;
     pub fn o3d_camera_trajectory_destroy(trajectory: *mut o3d_camera_trajectory_t);
-    pub fn o3d_camera_trajectory_size(trajectory: *const o3d_camera_trajectory_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_camera_trajectory_size(out_n: *mut usize, trajectory: *const o3d_camera_trajectory_t) -> o3d_status;
     pub fn o3d_camera_trajectory_get(
         trajectory: *const o3d_camera_trajectory_t,
         index: usize,
@@ -1186,9 +1186,9 @@ extern "C" {
     pub fn o3d_trianglemesh_destroy(mesh: *mut o3d_trianglemesh_t);
     pub fn o3d_trianglemesh_clone(out: *mut *mut o3d_trianglemesh_t, src: *const o3d_trianglemesh_t) -> o3d_status;
     pub fn o3d_trianglemesh_clear(mesh: *mut o3d_trianglemesh_t) -> o3d_status;
-    pub fn o3d_trianglemesh_num_vertices(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
-    pub fn o3d_trianglemesh_num_triangles(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
-    pub fn o3d_trianglemesh_has_array(mesh: *const o3d_trianglemesh_t, which: i32, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_num_vertices(out_n: *mut usize, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_num_triangles(out_n: *mut usize, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_has_array(out: *mut i32, mesh: *const o3d_trianglemesh_t, which: i32) -> o3d_status;
 
     pub fn o3d_trianglemesh_set_array(
         mesh: *mut o3d_trianglemesh_t,
@@ -1241,7 +1241,7 @@ extern "C" {
         out_rows: *mut usize,
     ) -> o3d_status;
 
-    pub fn o3d_trianglemesh_texture_count(mesh: *const o3d_trianglemesh_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_trianglemesh_texture_count(out_n: *mut usize, mesh: *const o3d_trianglemesh_t) -> o3d_status;
     pub fn o3d_trianglemesh_get_texture(
         out: *mut *mut o3d_image_t,
         mesh: *const o3d_trianglemesh_t,
@@ -1269,9 +1269,9 @@ extern "C" {
         center: *const f64,
     ) -> o3d_status;
     pub fn o3d_trianglemesh_scale(mesh: *mut o3d_trianglemesh_t, scale: f64, center: *const f64) -> o3d_status;
-    pub fn o3d_trianglemesh_get_min_bound(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_trianglemesh_get_max_bound(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_trianglemesh_get_center(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_trianglemesh_get_min_bound(out: *mut f64, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_get_max_bound(out: *mut f64, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_get_center(out: *mut f64, mesh: *const o3d_trianglemesh_t) -> o3d_status;
     pub fn o3d_trianglemesh_get_axis_aligned_bounding_box(
         mesh: *const o3d_trianglemesh_t,
         out_min: *mut f64,
@@ -1287,18 +1287,18 @@ extern "C" {
     pub fn o3d_trianglemesh_merge_close_vertices(mesh: *mut o3d_trianglemesh_t, eps: f64) -> o3d_status;
 
     // Queries.
-    pub fn o3d_trianglemesh_get_surface_area(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_trianglemesh_get_volume(mesh: *const o3d_trianglemesh_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_trianglemesh_is_watertight(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
+    pub fn o3d_trianglemesh_get_surface_area(out: *mut f64, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_get_volume(out: *mut f64, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_is_watertight(out: *mut i32, mesh: *const o3d_trianglemesh_t) -> o3d_status;
     pub fn o3d_trianglemesh_is_edge_manifold(
         mesh: *const o3d_trianglemesh_t,
         allow_boundary_edges: i32,
         out: *mut i32,
     ) -> o3d_status;
-    pub fn o3d_trianglemesh_is_vertex_manifold(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_trianglemesh_is_self_intersecting(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_trianglemesh_is_orientable(mesh: *const o3d_trianglemesh_t, out: *mut i32) -> o3d_status;
-    pub fn o3d_trianglemesh_euler_poincare_characteristic(mesh: *const o3d_trianglemesh_t, out: *mut i64)
+    pub fn o3d_trianglemesh_is_vertex_manifold(out: *mut i32, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_is_self_intersecting(out: *mut i32, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_is_orientable(out: *mut i32, mesh: *const o3d_trianglemesh_t) -> o3d_status;
+    pub fn o3d_trianglemesh_euler_poincare_characteristic(out: *mut i64, mesh: *const o3d_trianglemesh_t)
         -> o3d_status;
     pub fn o3d_trianglemesh_cluster_connected_triangles(
         mesh: *const o3d_trianglemesh_t,
@@ -1453,7 +1453,7 @@ extern "C" {
         min_bound: *const f64,
         max_bound: *const f64,
     ) -> o3d_status;
-    pub fn o3d_obb_get_box_points(obb: *const o3d_obb_t, out: *mut f64) -> o3d_status;
+    pub fn o3d_obb_get_box_points(out: *mut f64, obb: *const o3d_obb_t) -> o3d_status;
     pub fn o3d_obb_get_point_indices_within(
         obb: *const o3d_obb_t,
         xyz: *const f64,
@@ -1536,8 +1536,8 @@ extern "C" {
     pub fn o3d_lineset_create(out: *mut *mut o3d_lineset_t) -> o3d_status;
     pub fn o3d_lineset_destroy(lineset: *mut o3d_lineset_t);
     pub fn o3d_lineset_clone(out: *mut *mut o3d_lineset_t, src: *const o3d_lineset_t) -> o3d_status;
-    pub fn o3d_lineset_num_points(lineset: *const o3d_lineset_t, out_n: *mut usize) -> o3d_status;
-    pub fn o3d_lineset_num_lines(lineset: *const o3d_lineset_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_lineset_num_points(out_n: *mut usize, lineset: *const o3d_lineset_t) -> o3d_status;
+    pub fn o3d_lineset_num_lines(out_n: *mut usize, lineset: *const o3d_lineset_t) -> o3d_status;
     pub fn o3d_lineset_set_array(lineset: *mut o3d_lineset_t, which: i32, data: *const f64, rows: usize) -> o3d_status;
     pub fn o3d_lineset_get_array(
         lineset: *const o3d_lineset_t,
@@ -1620,9 +1620,9 @@ extern "C" {
         voxel_size: f64,
     ) -> o3d_status;
     pub fn o3d_voxelgrid_destroy(grid: *mut o3d_voxelgrid_t);
-    pub fn o3d_voxelgrid_get_voxel_size(grid: *const o3d_voxelgrid_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_voxelgrid_get_origin(grid: *const o3d_voxelgrid_t, out: *mut f64) -> o3d_status;
-    pub fn o3d_voxelgrid_num_voxels(grid: *const o3d_voxelgrid_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_voxelgrid_get_voxel_size(out: *mut f64, grid: *const o3d_voxelgrid_t) -> o3d_status;
+    pub fn o3d_voxelgrid_get_origin(out: *mut f64, grid: *const o3d_voxelgrid_t) -> o3d_status;
+    pub fn o3d_voxelgrid_num_voxels(out_n: *mut usize, grid: *const o3d_voxelgrid_t) -> o3d_status;
     pub fn o3d_voxelgrid_get_voxels(
         grid: *const o3d_voxelgrid_t,
         out_grid_index: *mut i32,
@@ -1630,7 +1630,7 @@ extern "C" {
         capacity: usize,
         out_n: *mut usize,
     ) -> o3d_status;
-    pub fn o3d_voxelgrid_get_voxel(grid: *const o3d_voxelgrid_t, point: *const f64, out_index: *mut i32) -> o3d_status;
+    pub fn o3d_voxelgrid_get_voxel(out_index: *mut i32, grid: *const o3d_voxelgrid_t, point: *const f64) -> o3d_status;
     pub fn o3d_voxelgrid_check_if_included(
         grid: *const o3d_voxelgrid_t,
         xyz: *const f64,
@@ -1676,7 +1676,7 @@ extern "C" {
         out_size: *mut f64,
         out_max_depth: *mut i32,
     ) -> o3d_status;
-    pub fn o3d_octree_num_leaf_nodes(octree: *const o3d_octree_t, out_n: *mut usize) -> o3d_status;
+    pub fn o3d_octree_num_leaf_nodes(out_n: *mut usize, octree: *const o3d_octree_t) -> o3d_status;
     pub fn o3d_octree_locate_leaf_node(
         octree: *const o3d_octree_t,
         point: *const f64,

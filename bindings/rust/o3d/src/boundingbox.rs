@@ -84,7 +84,7 @@ impl OrientedBoundingBox {
         let raw = self.to_raw();
         let mut out = [[0.0; 3]; 8];
         // SAFETY: valid struct; room for 24 contiguous doubles.
-        check(unsafe { sys::o3d_obb_get_box_points(&raw, out.as_mut_ptr().cast()) })?;
+        check(unsafe { sys::o3d_obb_get_box_points(out.as_mut_ptr().cast(), &raw) })?;
         Ok(out)
     }
 
@@ -95,14 +95,8 @@ impl OrientedBoundingBox {
         let mut n = 0usize;
         // SAFETY: points.len() rows of 3 doubles; `out` has room for one index per point.
         check(unsafe {
-            sys::o3d_obb_get_point_indices_within(
-                &raw,
-                points.as_ptr().cast(),
-                points.len(),
-                out.as_mut_ptr(),
-                out.len(),
-                &mut n,
-            )
+            sys::o3d_obb_get_point_indices_within(out.as_mut_ptr(), out.len(), &mut n, &raw, points.as_ptr().cast(),
+                points.len(), )
         })?;
         out.truncate(n.min(points.len()));
         Ok(out)
@@ -124,7 +118,7 @@ impl PointCloud {
     pub fn get_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
         // SAFETY: valid handle; writable struct.
         OrientedBoundingBox::filled_by(|out| unsafe {
-            sys::o3d_pointcloud_get_oriented_bounding_box(self.as_raw(), robust as i32, out)
+            sys::o3d_pointcloud_get_oriented_bounding_box(out, self.as_raw(), robust as i32)
         })
     }
 
@@ -141,7 +135,7 @@ impl TriangleMesh {
     pub fn get_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
         // SAFETY: valid handle; writable struct.
         OrientedBoundingBox::filled_by(|out| unsafe {
-            sys::o3d_trianglemesh_get_oriented_bounding_box(self.as_raw(), robust as i32, out)
+            sys::o3d_trianglemesh_get_oriented_bounding_box(out, self.as_raw(), robust as i32)
         })
     }
 

@@ -117,7 +117,7 @@ impl CameraTrajectory {
     pub fn len(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_camera_trajectory_size(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_camera_trajectory_size(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -132,7 +132,7 @@ impl CameraTrajectory {
         let mut extrinsic = [[0.0f64; 4]; 4];
         // SAFETY: writable struct and 16 contiguous doubles.
         check(unsafe {
-            sys::o3d_camera_trajectory_get(self.as_raw(), index, &mut intrinsic, extrinsic.as_mut_ptr().cast())
+            sys::o3d_camera_trajectory_get(&mut intrinsic, extrinsic.as_mut_ptr().cast(), self.as_raw(), index)
         })?;
         Ok(PinholeCameraParameters { intrinsic: PinholeIntrinsic::from_raw(intrinsic), extrinsic })
     }

@@ -45,9 +45,9 @@ impl Feature {
         let (mut dimension, mut num, mut data) = (0, 0, ptr::null_mut());
         // SAFETY: valid handle and out-pointers; we hold the feature exclusively.
         unsafe {
-            check(sys::o3d_feature_dimension(h, &mut dimension))?;
-            check(sys::o3d_feature_num(h, &mut num))?;
-            check(sys::o3d_feature_data(h, &mut data))?;
+            check(sys::o3d_feature_dimension(&mut dimension, h))?;
+            check(sys::o3d_feature_num(&mut num, h))?;
+            check(sys::o3d_feature_data(&mut data, h))?;
         }
         if data.is_null() && dimension * num != 0 {
             return Err(Error::new(ErrorCode::Internal, "o3d_feature_data returned NULL for a non-empty feature"));
@@ -148,7 +148,7 @@ impl Feature {
     pub fn to_vec(&self) -> Result<Vec<f64>> {
         let mut out = vec![0.0; self.dimension * self.num];
         // SAFETY: `out` has exactly the capacity passed.
-        check(unsafe { sys::o3d_feature_get_data(self.as_raw(), out.as_mut_ptr(), out.len()) })?;
+        check(unsafe { sys::o3d_feature_get_data(out.as_mut_ptr(), out.len(), self.as_raw()) })?;
         Ok(out)
     }
 
@@ -268,16 +268,8 @@ pub fn correspondences_from_features(
     let mut n = 0usize;
     // SAFETY: valid handles; `out` holds out.len() pairs of int32.
     check(unsafe {
-        sys::o3d_correspondences_from_features(
-            source.as_raw(),
-            target.as_raw(),
-            options.mutual_filter as i32,
-            options.mutual_consistency_ratio,
-            threads,
-            out.as_mut_ptr().cast(),
-            out.len(),
-            &mut n,
-        )
+        sys::o3d_correspondences_from_features(out.as_mut_ptr().cast(), out.len(), &mut n, source.as_raw(),
+            target.as_raw(), options.mutual_filter as i32, options.mutual_consistency_ratio, threads, )
     })?;
     if n > out.len() {
         return Err(Error::new(ErrorCode::Internal, format!("{n} correspondences for {} descriptors", out.len())));

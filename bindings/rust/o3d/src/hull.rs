@@ -33,7 +33,7 @@ impl PointCloud {
     pub fn compute_convex_hull(&self, joggle_inputs: bool) -> Result<(TriangleMesh, Vec<i32>)> {
         mesh_and_indices(self.try_len()?, |out, idx, cap, n| {
             // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
-            unsafe { sys::o3d_pointcloud_compute_convex_hull(out, self.as_raw(), joggle_inputs as i32, idx, cap, n) }
+            unsafe { sys::o3d_pointcloud_compute_convex_hull(out, idx, cap, n, self.as_raw(), joggle_inputs as i32) }
         })
     }
 
@@ -44,15 +44,8 @@ impl PointCloud {
         mesh_and_indices(self.try_len()?, |out, idx, cap, n| {
             // SAFETY: valid handle; 3 doubles; `idx` has room for `cap` ints.
             unsafe {
-                sys::o3d_pointcloud_hidden_point_removal(
-                    out,
-                    self.as_raw(),
-                    camera_location.as_ptr(),
-                    radius,
-                    idx,
-                    cap,
-                    n,
-                )
+                sys::o3d_pointcloud_hidden_point_removal(out, idx, cap, n, self.as_raw(), camera_location.as_ptr(),
+                    radius, )
             }
         })
     }
@@ -63,7 +56,7 @@ impl TriangleMesh {
     pub fn compute_convex_hull(&self, joggle_inputs: bool) -> Result<(TriangleMesh, Vec<i32>)> {
         mesh_and_indices(self.num_vertices()?, |out, idx, cap, n| {
             // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
-            unsafe { sys::o3d_trianglemesh_compute_convex_hull(out, self.as_raw(), joggle_inputs as i32, idx, cap, n) }
+            unsafe { sys::o3d_trianglemesh_compute_convex_hull(out, idx, cap, n, self.as_raw(), joggle_inputs as i32) }
         })
     }
 }

@@ -185,7 +185,7 @@ impl Image {
     pub fn data(&self) -> Result<&[u8]> {
         let (mut data, mut size) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_image_data_view(self.as_raw(), &mut data, &mut size) })?;
+        check(unsafe { sys::o3d_image_array_view(&mut data, &mut size, self.as_raw(), O3D_IMAGE_DATA) })?;
         if data.is_null() || size == 0 {
             return Ok(&[]);
         }
@@ -197,7 +197,7 @@ impl Image {
     pub fn data_mut(&mut self) -> Result<&mut [u8]> {
         let (mut data, mut size) = (ptr::null_mut(), 0);
         // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_image_data_mutable_view(self.raw.as_ptr(), &mut data, &mut size) })?;
+        check(unsafe { sys::o3d_image_array_mutable_view(&mut data, &mut size, self.raw.as_ptr(), O3D_IMAGE_DATA) })?;
         if data.is_null() || size == 0 {
             return Ok(&mut []);
         }
@@ -208,7 +208,7 @@ impl Image {
     /// Copy of the pixel bytes (`o3d_image_get_data`).
     pub fn to_vec(&self) -> Result<Vec<u8>> {
         // SAFETY: `out` has room for `cap` bytes or is NULL.
-        copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_image_get_data(self.as_raw(), out, cap, n) })
+        copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_image_get_array(out, cap, n, self.as_raw(), O3D_IMAGE_DATA) })
     }
 
     /// The values of a 1-channel `f32` image (copied; alignment of the bytes is not guaranteed).

@@ -116,7 +116,7 @@ impl Buffer {
     pub fn as_bytes(&self) -> Result<&[u8]> {
         let (mut data, mut size) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_buffer_view(self.raw.as_ptr(), &mut data, &mut size) })?;
+        check(unsafe { sys::o3d_buffer_view(&mut data, &mut size, self.raw.as_ptr()) })?;
         if data.is_null() || size == 0 {
             return Ok(&[]);
         }
@@ -128,7 +128,7 @@ impl Buffer {
     pub fn to_vec(&self) -> Result<Vec<u8>> {
         // SAFETY: `out` has room for `cap` bytes or is NULL.
         crate::pointcloud::copy_out::<u8>(|out, cap, n| unsafe {
-            sys::o3d_buffer_get_data(self.raw.as_ptr(), out, cap, n)
+            sys::o3d_buffer_get_data(out, cap, n, self.raw.as_ptr())
         })
     }
 }

@@ -165,7 +165,7 @@ pub fn read_pinhole_camera_intrinsic(path: impl AsRef<Path>) -> Result<PinholeIn
     let path = c_path(path.as_ref())?;
     let mut out = sys::o3d_pinhole_intrinsic_t::default();
     // SAFETY: NUL-terminated path and a writable struct.
-    check(unsafe { sys::o3d_io_read_pinhole_camera_intrinsic(path.as_ptr(), &mut out) })?;
+    check(unsafe { sys::o3d_io_read_pinhole_camera_intrinsic(&mut out, path.as_ptr()) })?;
     Ok(PinholeIntrinsic::from_raw(out))
 }
 
@@ -184,7 +184,7 @@ pub fn read_pinhole_camera_parameters(path: impl AsRef<Path>) -> Result<PinholeC
     let mut extrinsic = [[0.0f64; 4]; 4];
     // SAFETY: NUL-terminated path, a writable struct and 16 doubles.
     check(unsafe {
-        sys::o3d_io_read_pinhole_camera_parameters(path.as_ptr(), &mut intrinsic, extrinsic.as_mut_ptr().cast())
+        sys::o3d_io_read_pinhole_camera_parameters(&mut intrinsic, extrinsic.as_mut_ptr().cast(), path.as_ptr())
     })?;
     Ok(PinholeCameraParameters { intrinsic: PinholeIntrinsic::from_raw(intrinsic), extrinsic })
 }

@@ -62,7 +62,7 @@ impl SearchResultRef {
     pub fn counts(&self) -> Result<(usize, usize)> {
         let (mut q, mut t) = (0, 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_search_result_counts(self.raw.as_ptr(), &mut q, &mut t) })?;
+        check(unsafe { sys::o3d_search_result_counts(&mut q, &mut t, self.raw.as_ptr()) })?;
         Ok((q, t))
     }
 
@@ -71,7 +71,7 @@ impl SearchResultRef {
         let (q, t) = self.counts()?;
         let (mut o, mut i, mut d) = (ptr::null(), ptr::null(), ptr::null());
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_search_result_view(self.raw.as_ptr(), &mut o, &mut i, &mut d) })?;
+        check(unsafe { sys::o3d_search_result_view(&mut o, &mut i, &mut d, self.raw.as_ptr()) })?;
         // SAFETY: the header promises q + 1 offsets and t indices / distances, valid until destroy.
         unsafe {
             let mk = |p: *const i64, n| if p.is_null() || n == 0 { &[][..] } else { slice::from_raw_parts(p, n) };
@@ -89,9 +89,9 @@ impl SearchResultRef {
         let raw = self.raw.as_ptr();
         // SAFETY: each buffer has exactly the capacity passed.
         unsafe {
-            check(sys::o3d_search_result_get_offsets(raw, r.offsets.as_mut_ptr(), r.offsets.len()))?;
-            check(sys::o3d_search_result_get_indices(raw, r.indices.as_mut_ptr(), r.indices.len()))?;
-            check(sys::o3d_search_result_get_distances2(raw, r.distances2.as_mut_ptr(), r.distances2.len()))?;
+            check(sys::o3d_search_result_get_offsets(r.offsets.as_mut_ptr(), r.offsets.len(), raw))?;
+            check(sys::o3d_search_result_get_indices(r.indices.as_mut_ptr(), r.indices.len(), raw))?;
+            check(sys::o3d_search_result_get_distances2(r.distances2.as_mut_ptr(), r.distances2.len(), raw))?;
         }
         Ok(r)
     }
@@ -157,7 +157,7 @@ impl KDTreeFlann {
     pub fn dimension(&self) -> Result<usize> {
         let mut d = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_kdtree_dimension(self.raw.as_ptr(), &mut d) })?;
+        check(unsafe { sys::o3d_kdtree_dimension(&mut d, self.raw.as_ptr()) })?;
         Ok(d)
     }
 
@@ -176,7 +176,7 @@ impl KDTreeFlann {
         let threads = to_i32(num_threads, "num_threads")?;
         // SAFETY: queries holds n * dimension doubles; valid parameter struct.
         wrap_result(|out| unsafe {
-            sys::o3d_kdtree_search_xd(self.raw.as_ptr(), queries.as_ptr(), n, dimension, &p, threads, out)
+            sys::o3d_kdtree_search_xd(out, self.raw.as_ptr(), queries.as_ptr(), n, dimension, &p, threads)
         })
     }
 
@@ -215,7 +215,7 @@ impl KDTreeFlann {
     pub fn len(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_kdtree_size(self.raw.as_ptr(), &mut n) })?;
+        check(unsafe { sys::o3d_kdtree_size(&mut n, self.raw.as_ptr()) })?;
         Ok(n)
     }
 
@@ -229,7 +229,7 @@ impl KDTreeFlann {
         let p = param.to_raw()?;
         // SAFETY: queries.len() rows of 3 doubles; valid parameter struct.
         wrap_result(|out| unsafe {
-            sys::o3d_kdtree_search(self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0, out)
+            sys::o3d_kdtree_search(out, self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0)
         })
     }
 
@@ -238,7 +238,7 @@ impl KDTreeFlann {
         let p = param.to_raw()?;
         // SAFETY: queries.len() rows of 3 floats; valid parameter struct.
         wrap_result(|out| unsafe {
-            sys::o3d_kdtree_search_f32(self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0, out)
+            sys::o3d_kdtree_search_f32(out, self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0)
         })
     }
 

@@ -70,7 +70,7 @@ impl LineSet {
     pub fn num_points(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_lineset_num_points(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_lineset_num_points(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -78,7 +78,7 @@ impl LineSet {
     pub fn num_lines(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_lineset_num_lines(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_lineset_num_lines(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -90,7 +90,7 @@ impl LineSet {
     fn view_f64(&self, which: i32) -> Result<&[[f64; 3]]> {
         let (mut data, mut n) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_lineset_array_view(self.as_raw(), which, &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_lineset_array_view(&mut data, &mut n, self.as_raw(), which) })?;
         if data.is_null() || n == 0 {
             return Ok(&[]);
         }
@@ -101,7 +101,7 @@ impl LineSet {
     fn get_f64(&self, which: i32) -> Result<Vec<[f64; 3]>> {
         // SAFETY: `out` has room for `cap` rows of 3 doubles, or is NULL for the count query.
         copy_out::<[f64; 3]>(|out, cap, n| unsafe {
-            sys::o3d_lineset_get_array(self.as_raw(), which, out.cast(), cap, n)
+            sys::o3d_lineset_get_array(out.cast(), cap, n, self.as_raw(), which)
         })
     }
 
@@ -138,14 +138,14 @@ impl LineSet {
     /// Replace the lines (pairs of point indices).
     pub fn set_lines(&mut self, lines: &[[i32; 2]]) -> Result<()> {
         // SAFETY: lines.len() rows of 2 contiguous ints; copied by the library.
-        check(unsafe { sys::o3d_lineset_set_lines(self.raw_mut(), lines.as_ptr().cast(), lines.len()) })
+        check(unsafe { sys::o3d_lineset_set_index_array(self.raw_mut(), O3D_LINESET_LINES, lines.as_ptr().cast(), lines.len()) })
     }
 
     /// Zero-copy view of the lines.
     pub fn lines(&self) -> Result<&[[i32; 2]]> {
         let (mut data, mut n) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_lineset_lines_view(self.as_raw(), &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_lineset_index_array_view(&mut data, &mut n, self.as_raw(), O3D_LINESET_LINES) })?;
         if data.is_null() || n == 0 {
             return Ok(&[]);
         }
@@ -156,7 +156,7 @@ impl LineSet {
     /// Copy of the lines.
     pub fn lines_to_vec(&self) -> Result<Vec<[i32; 2]>> {
         // SAFETY: `out` has room for `cap` rows of 2 ints, or is NULL.
-        copy_out::<[i32; 2]>(|out, cap, n| unsafe { sys::o3d_lineset_get_lines(self.as_raw(), out.cast(), cap, n) })
+        copy_out::<[i32; 2]>(|out, cap, n| unsafe { sys::o3d_lineset_get_index_array(out.cast(), cap, n, self.as_raw(), O3D_LINESET_LINES) })
     }
 
     /// Set every line's color to `rgb`.

@@ -84,7 +84,7 @@ impl Octree {
     pub fn origin(&self) -> Result<[f64; 3]> {
         let mut v = [0.0; 3];
         // SAFETY: room for 3 doubles; the other outputs are skipped.
-        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), v.as_mut_ptr(), ptr::null_mut(), ptr::null_mut()) })?;
+        check(unsafe { sys::o3d_octree_get_root(v.as_mut_ptr(), ptr::null_mut(), ptr::null_mut(), self.as_raw()) })?;
         Ok(v)
     }
 
@@ -92,7 +92,7 @@ impl Octree {
     pub fn size(&self) -> Result<f64> {
         let mut v = 0.0;
         // SAFETY: one double; the other outputs are skipped.
-        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), ptr::null_mut(), &mut v, ptr::null_mut()) })?;
+        check(unsafe { sys::o3d_octree_get_root(ptr::null_mut(), &mut v, ptr::null_mut(), self.as_raw()) })?;
         Ok(v)
     }
 
@@ -100,7 +100,7 @@ impl Octree {
     pub fn max_depth(&self) -> Result<usize> {
         let mut v = 0i32;
         // SAFETY: one int; the other outputs are skipped.
-        check(unsafe { sys::o3d_octree_get_root(self.as_raw(), ptr::null_mut(), ptr::null_mut(), &mut v) })?;
+        check(unsafe { sys::o3d_octree_get_root(ptr::null_mut(), ptr::null_mut(), &mut v, self.as_raw()) })?;
         Ok(v.max(0) as usize)
     }
 
@@ -108,7 +108,7 @@ impl Octree {
     pub fn num_leaf_nodes(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_octree_num_leaf_nodes(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_octree_num_leaf_nodes(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -120,16 +120,8 @@ impl Octree {
             // SAFETY: 3 doubles in; writable struct and 3 doubles out; `out` has room for
             // indices.len() ints or is NULL.
             check(unsafe {
-                sys::o3d_octree_locate_leaf_node(
-                    self.as_raw(),
-                    point.as_ptr(),
-                    &mut found,
-                    info,
-                    color.as_mut_ptr(),
-                    out,
-                    indices.len(),
-                    &mut n,
-                )
+                sys::o3d_octree_locate_leaf_node(&mut found, info, color.as_mut_ptr(), out, indices.len(), &mut n,
+                    self.as_raw(), point.as_ptr(), )
             })?;
             Ok::<_, crate::Error>((found != 0, n))
         };

@@ -166,7 +166,7 @@ impl PointCloud {
     pub fn try_len(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_pointcloud_size(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_pointcloud_size(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -417,7 +417,7 @@ impl PointCloud {
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         // SAFETY: room for 3 + 3 doubles.
         check(unsafe {
-            sys::o3d_pointcloud_get_axis_aligned_bounding_box(self.as_raw(), lo.as_mut_ptr(), hi.as_mut_ptr())
+            sys::o3d_pointcloud_get_axis_aligned_bounding_box(lo.as_mut_ptr(), hi.as_mut_ptr(), self.as_raw())
         })?;
         Ok((lo, hi))
     }
@@ -510,7 +510,7 @@ impl PointCloud {
     pub fn compute_nearest_neighbor_distance(&self) -> Result<Vec<f64>> {
         // SAFETY: `out` has room for `cap` doubles or is NULL.
         copy_out::<f64>(|out, cap, n| unsafe {
-            sys::o3d_pointcloud_compute_nearest_neighbor_distance(self.as_raw(), out, cap, n, 0)
+            sys::o3d_pointcloud_compute_nearest_neighbor_distance(out, cap, n, self.as_raw(), 0)
         })
     }
 
@@ -518,7 +518,7 @@ impl PointCloud {
     pub fn compute_point_cloud_distance(&self, target: &PointCloud) -> Result<Vec<f64>> {
         // SAFETY: `out` has room for `cap` doubles or is NULL.
         copy_out::<f64>(|out, cap, n| unsafe {
-            sys::o3d_pointcloud_compute_point_cloud_distance(self.as_raw(), target.as_raw(), out, cap, n, 0)
+            sys::o3d_pointcloud_compute_point_cloud_distance(out, cap, n, self.as_raw(), target.as_raw(), 0)
         })
     }
 
@@ -542,7 +542,7 @@ impl PointCloud {
             let mut out = ptr::null_mut();
             // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
             let status = unsafe {
-                sys::o3d_pointcloud_remove_statistical_outlier(&mut out, self.as_raw(), nb, std_ratio, idx, cap, n)
+                sys::o3d_pointcloud_remove_statistical_outlier(&mut out, idx, cap, n, self.as_raw(), nb, std_ratio)
             };
             cloud = NonNull::new(out);
             status
@@ -559,7 +559,7 @@ impl PointCloud {
             let mut out = ptr::null_mut();
             // SAFETY: valid handle; `idx` has room for `cap` ints; out-pointers valid.
             let status =
-                unsafe { sys::o3d_pointcloud_remove_radius_outlier(&mut out, self.as_raw(), nb, radius, idx, cap, n) };
+                unsafe { sys::o3d_pointcloud_remove_radius_outlier(&mut out, idx, cap, n, self.as_raw(), nb, radius) };
             cloud = NonNull::new(out);
             status
         })?;
@@ -591,18 +591,8 @@ impl PointCloud {
         let inliers = self.indices(|idx, cap, n| {
             // SAFETY: valid handle; room for 4 doubles; `idx` has room for `cap` ints.
             unsafe {
-                sys::o3d_pointcloud_segment_plane(
-                    self.as_raw(),
-                    distance_threshold,
-                    ransac_n,
-                    num_iterations,
-                    probability,
-                    seed,
-                    plane.as_mut_ptr(),
-                    idx,
-                    cap,
-                    n,
-                )
+                sys::o3d_pointcloud_segment_plane(plane.as_mut_ptr(), idx, cap, n, self.as_raw(), distance_threshold,
+                    ransac_n, num_iterations, probability, seed, )
             }
         })?;
         Ok((plane, inliers))
@@ -614,7 +604,7 @@ impl PointCloud {
         let min_points = to_i32(min_points, "min_points")?;
         // SAFETY: `out` has room for `cap` ints or is NULL.
         copy_out::<i32>(|out, cap, n| unsafe {
-            sys::o3d_pointcloud_cluster_dbscan(self.as_raw(), eps, min_points, out, cap, n)
+            sys::o3d_pointcloud_cluster_dbscan(out, cap, n, self.as_raw(), eps, min_points)
         })
     }
 
@@ -624,11 +614,8 @@ impl PointCloud {
         let mut cov = [[0.0f64; 3]; 3];
         // SAFETY: room for 3 and 9 contiguous doubles.
         check(unsafe {
-            sys::o3d_pointcloud_compute_mean_and_covariance(
-                self.as_raw(),
-                mean.as_mut_ptr(),
-                cov.as_mut_ptr().cast::<f64>(),
-            )
+            sys::o3d_pointcloud_compute_mean_and_covariance(mean.as_mut_ptr(), cov.as_mut_ptr().cast::<f64>(),
+                self.as_raw(), )
         })?;
         Ok((mean, cov))
     }
@@ -637,7 +624,7 @@ impl PointCloud {
     pub fn compute_mahalanobis_distance(&self) -> Result<Vec<f64>> {
         // SAFETY: `out` has room for `cap` doubles or is NULL.
         copy_out::<f64>(|out, cap, n| unsafe {
-            sys::o3d_pointcloud_compute_mahalanobis_distance(self.as_raw(), out, cap, n)
+            sys::o3d_pointcloud_compute_mahalanobis_distance(out, cap, n, self.as_raw())
         })
     }
 }

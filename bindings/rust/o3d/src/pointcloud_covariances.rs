@@ -16,7 +16,7 @@ impl PointCloud {
     pub fn has_covariances(&self) -> Result<bool> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_pointcloud_has_covariances(self.as_raw(), &mut v) })?;
+        check(unsafe { sys::o3d_pointcloud_has_array(&mut v, self.as_raw(), O3D_POINTCLOUD_COVARIANCES) })?;
         Ok(v != 0)
     }
 
@@ -24,7 +24,7 @@ impl PointCloud {
     pub fn set_covariances(&mut self, covariances: &[Mat3]) -> Result<()> {
         // SAFETY: covariances.len() matrices of 9 contiguous doubles; copied by the library.
         check(unsafe {
-            sys::o3d_pointcloud_set_covariances(self.raw_mut(), covariances.as_ptr().cast(), covariances.len())
+            sys::o3d_pointcloud_set_array(self.raw_mut(), O3D_POINTCLOUD_COVARIANCES, covariances.as_ptr().cast(), covariances.len())
         })
     }
 
@@ -32,7 +32,7 @@ impl PointCloud {
     pub fn covariances(&self) -> Result<&[Mat3]> {
         let (mut data, mut n) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_pointcloud_covariances_view(self.as_raw(), &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_pointcloud_array_view(&mut data, &mut n, self.as_raw(), O3D_POINTCLOUD_COVARIANCES) })?;
         if data.is_null() || n == 0 {
             return Ok(&[]);
         }
@@ -44,7 +44,7 @@ impl PointCloud {
     pub fn covariances_to_vec(&self) -> Result<Vec<Mat3>> {
         // SAFETY: `out` has room for `cap` matrices or is NULL for the count query.
         copy_out::<Mat3>(|out, cap, n| unsafe {
-            sys::o3d_pointcloud_get_covariances(self.as_raw(), out.cast(), cap, n)
+            sys::o3d_pointcloud_get_array(out.cast(), cap, n, self.as_raw(), O3D_POINTCLOUD_COVARIANCES)
         })
     }
 

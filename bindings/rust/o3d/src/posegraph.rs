@@ -156,7 +156,7 @@ impl PoseGraph {
     pub fn num_nodes(&self) -> usize {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer (the call fails only for NULL).
-        let status = unsafe { sys::o3d_pose_graph_num_nodes(self.as_raw(), &mut n) };
+        let status = unsafe { sys::o3d_pose_graph_num_nodes(&mut n, self.as_raw()) };
         check(status).unwrap_or_else(|e| panic!("o3d_pose_graph_num_nodes failed: {e}"));
         n
     }
@@ -165,7 +165,7 @@ impl PoseGraph {
     pub fn num_edges(&self) -> usize {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer (the call fails only for NULL).
-        let status = unsafe { sys::o3d_pose_graph_num_edges(self.as_raw(), &mut n) };
+        let status = unsafe { sys::o3d_pose_graph_num_edges(&mut n, self.as_raw()) };
         check(status).unwrap_or_else(|e| panic!("o3d_pose_graph_num_edges failed: {e}"));
         n
     }
@@ -180,7 +180,7 @@ impl PoseGraph {
     pub fn node(&self, index: usize) -> Result<[[f64; 4]; 4]> {
         let mut pose = [[0.0; 4]; 4];
         // SAFETY: valid handle, room for 16 doubles.
-        check(unsafe { sys::o3d_pose_graph_get_node(self.as_raw(), index, pose.as_mut_ptr().cast()) })?;
+        check(unsafe { sys::o3d_pose_graph_get_node(pose.as_mut_ptr().cast(), self.as_raw(), index) })?;
         Ok(pose)
     }
 
@@ -207,7 +207,7 @@ impl PoseGraph {
     pub fn edge(&self, index: usize) -> Result<PoseGraphEdge> {
         let mut raw = raw_edge()?;
         // SAFETY: valid handle; raw is an initialised edge with struct_size set.
-        check(unsafe { sys::o3d_pose_graph_get_edge(self.as_raw(), index, &mut raw) })?;
+        check(unsafe { sys::o3d_pose_graph_get_edge(&mut raw, self.as_raw(), index) })?;
         Ok(PoseGraphEdge::from_raw(&raw))
     }
 
@@ -437,7 +437,7 @@ fn optimize(graph: &mut PoseGraph, opts: &sys::o3d_global_optimization_options_t
         ..Default::default()
     };
     // SAFETY: valid handle held exclusively, options from init, summary with struct_size set.
-    check(unsafe { sys::o3d_global_optimization(graph.raw.as_ptr(), opts, &mut raw) })?;
+    check(unsafe { sys::o3d_global_optimization(&mut raw, graph.raw.as_ptr(), opts) })?;
     Ok(GlobalOptimizationSummary {
         iterations: raw.iterations.max(0) as usize,
         initial_residual: raw.initial_residual,

@@ -128,7 +128,7 @@ impl RobustKernel {
         let (kernel, k) = self.raw();
         let mut w = 0.0;
         // SAFETY: plain values and an out-pointer.
-        check(unsafe { sys::o3d_robust_kernel_weight(kernel, k, residual, &mut w) })?;
+        check(unsafe { sys::o3d_robust_kernel_weight(&mut w, kernel, k, residual) })?;
         Ok(w)
     }
 }
@@ -254,13 +254,13 @@ pub(crate) fn read_result(
     };
     // SAFETY: valid handle; out-pointers sized as the header says.
     unsafe {
-        check(sys::o3d_registration_result_get_transformation(h, r.transformation.as_mut_ptr().cast()))?;
-        check(sys::o3d_registration_result_get_fitness(h, &mut r.fitness))?;
-        check(sys::o3d_registration_result_get_inlier_rmse(h, &mut r.inlier_rmse))?;
+        check(sys::o3d_registration_result_get_transformation(r.transformation.as_mut_ptr().cast(), h))?;
+        check(sys::o3d_registration_result_get_fitness(&mut r.fitness, h))?;
+        check(sys::o3d_registration_result_get_inlier_rmse(&mut r.inlier_rmse, h))?;
     }
     // SAFETY: `out` has room for `cap` pairs of int32, or is NULL.
     r.correspondence_set = copy_out::<[i32; 2]>(|out, cap, n| unsafe {
-        sys::o3d_registration_result_get_correspondence_set(h, out.cast(), cap, n)
+        sys::o3d_registration_result_get_correspondence_set(out.cast(), cap, n, h)
     })?;
     Ok(r)
 }
@@ -397,13 +397,8 @@ pub fn get_information_matrix_from_point_clouds(
     let mut out = [[0.0; 6]; 6];
     // SAFETY: valid handles, 16 doubles in, room for 36 doubles out.
     check(unsafe {
-        sys::o3d_get_information_matrix_from_point_clouds(
-            source.as_raw(),
-            target.as_raw(),
-            max_correspondence_distance,
-            transformation.as_ptr().cast(),
-            out.as_mut_ptr().cast(),
-        )
+        sys::o3d_get_information_matrix_from_point_clouds(out.as_mut_ptr().cast(), source.as_raw(), target.as_raw(),
+            max_correspondence_distance, transformation.as_ptr().cast(), )
     })?;
     Ok(out)
 }

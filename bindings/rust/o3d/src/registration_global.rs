@@ -72,15 +72,8 @@ impl CorrespondenceChecker {
         let mut passed = 0;
         // SAFETY: valid handles; corres.len() pairs of int32; 16 doubles.
         check(unsafe {
-            sys::o3d_correspondence_checker_check(
-                &raw,
-                source.as_raw(),
-                target.as_raw(),
-                corres.as_ptr().cast(),
-                corres.len(),
-                mat4_ptr(transformation),
-                &mut passed,
-            )
+            sys::o3d_correspondence_checker_check(&mut passed, &raw, source.as_raw(), target.as_raw(),
+                corres.as_ptr().cast(), corres.len(), mat4_ptr(transformation), )
         })?;
         Ok(passed != 0)
     }

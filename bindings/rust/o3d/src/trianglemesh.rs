@@ -102,7 +102,7 @@ impl TriangleMesh {
     pub fn num_vertices(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_num_vertices(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_num_vertices(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -110,14 +110,14 @@ impl TriangleMesh {
     pub fn num_triangles(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_num_triangles(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_num_triangles(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
     fn has(&self, which: i32) -> Result<bool> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_has_array(self.as_raw(), which, &mut v) })?;
+        check(unsafe { sys::o3d_trianglemesh_has_array(&mut v, self.as_raw(), which) })?;
         Ok(v != 0)
     }
 
@@ -171,7 +171,7 @@ impl TriangleMesh {
     fn view_f64<const N: usize>(&self, which: i32) -> Result<&[[f64; N]]> {
         let (mut data, mut n) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_array_view(self.as_raw(), which, &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_array_view(&mut data, &mut n, self.as_raw(), which) })?;
         if data.is_null() || n == 0 {
             return Ok(&[]);
         }
@@ -182,7 +182,7 @@ impl TriangleMesh {
     fn view_f64_mut<const N: usize>(&mut self, which: i32) -> Result<&mut [[f64; N]]> {
         let (mut data, mut n) = (ptr::null_mut(), 0);
         // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_array_mutable_view(self.raw_mut(), which, &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_array_mutable_view(&mut data, &mut n, self.raw_mut(), which) })?;
         if data.is_null() || n == 0 {
             return Ok(&mut []);
         }
@@ -196,7 +196,7 @@ impl TriangleMesh {
     {
         // SAFETY: `out` has room for `cap` rows of N doubles, or is NULL for the count query.
         copy_out::<[f64; N]>(|out, cap, n| unsafe {
-            sys::o3d_trianglemesh_get_array(self.as_raw(), which, out.cast(), cap, n)
+            sys::o3d_trianglemesh_get_array(out.cast(), cap, n, self.as_raw(), which)
         })
     }
 
@@ -295,7 +295,7 @@ impl TriangleMesh {
     fn view_i32<const N: usize>(&self, which: i32) -> Result<&[[i32; N]]> {
         let (mut data, mut n) = (ptr::null(), 0);
         // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_index_array_view(self.as_raw(), which, &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_index_array_view(&mut data, &mut n, self.as_raw(), which) })?;
         if data.is_null() || n == 0 {
             return Ok(&[]);
         }
@@ -306,7 +306,7 @@ impl TriangleMesh {
     fn view_i32_mut<const N: usize>(&mut self, which: i32) -> Result<&mut [[i32; N]]> {
         let (mut data, mut n) = (ptr::null_mut(), 0);
         // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_index_array_mutable_view(self.raw_mut(), which, &mut data, &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_index_array_mutable_view(&mut data, &mut n, self.raw_mut(), which) })?;
         if data.is_null() || n == 0 {
             return Ok(&mut []);
         }
@@ -320,7 +320,7 @@ impl TriangleMesh {
     {
         // SAFETY: `out` has room for `cap` rows of N ints, or is NULL.
         copy_out::<[i32; N]>(|out, cap, n| unsafe {
-            sys::o3d_trianglemesh_get_index_array(self.as_raw(), which, out.cast(), cap, n)
+            sys::o3d_trianglemesh_get_index_array(out.cast(), cap, n, self.as_raw(), which)
         })
     }
 
@@ -382,7 +382,7 @@ impl TriangleMesh {
     pub fn texture_count(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_texture_count(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_trianglemesh_texture_count(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 

@@ -153,7 +153,7 @@ impl TriangleMesh {
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
         // SAFETY: room for 3 + 3 doubles.
         check(unsafe {
-            sys::o3d_trianglemesh_get_axis_aligned_bounding_box(self.as_raw(), lo.as_mut_ptr(), hi.as_mut_ptr())
+            sys::o3d_trianglemesh_get_axis_aligned_bounding_box(lo.as_mut_ptr(), hi.as_mut_ptr(), self.as_raw())
         })?;
         Ok((lo, hi))
     }
@@ -198,7 +198,7 @@ impl TriangleMesh {
     pub fn get_surface_area(&self) -> Result<f64> {
         let mut v = 0.0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_get_surface_area(self.as_raw(), &mut v) })?;
+        check(unsafe { sys::o3d_trianglemesh_get_surface_area(&mut v, self.as_raw()) })?;
         Ok(v)
     }
 
@@ -206,7 +206,7 @@ impl TriangleMesh {
     pub fn get_volume(&self) -> Result<f64> {
         let mut v = 0.0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_get_volume(self.as_raw(), &mut v) })?;
+        check(unsafe { sys::o3d_trianglemesh_get_volume(&mut v, self.as_raw()) })?;
         Ok(v)
     }
 
@@ -219,7 +219,7 @@ impl TriangleMesh {
     pub fn is_edge_manifold(&self, allow_boundary_edges: bool) -> Result<bool> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_is_edge_manifold(self.as_raw(), allow_boundary_edges as i32, &mut v) })?;
+        check(unsafe { sys::o3d_trianglemesh_is_edge_manifold(&mut v, self.as_raw(), allow_boundary_edges as i32) })?;
         Ok(v != 0)
     }
 
@@ -242,7 +242,7 @@ impl TriangleMesh {
     pub fn euler_poincare_characteristic(&self) -> Result<i64> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_euler_poincare_characteristic(self.as_raw(), &mut v) })?;
+        check(unsafe { sys::o3d_trianglemesh_euler_poincare_characteristic(&mut v, self.as_raw()) })?;
         Ok(v)
     }
 
@@ -257,15 +257,9 @@ impl TriangleMesh {
         let (mut n_tri, mut n_clusters) = (0usize, 0usize);
         // SAFETY: three buffers of `cap` values each.
         check(unsafe {
-            sys::o3d_trianglemesh_cluster_connected_triangles(
-                self.as_raw(),
-                out.triangle_clusters.as_mut_ptr(),
-                out.cluster_n_triangles.as_mut_ptr(),
-                out.cluster_area.as_mut_ptr(),
-                cap,
-                &mut n_tri,
-                &mut n_clusters,
-            )
+            sys::o3d_trianglemesh_cluster_connected_triangles(out.triangle_clusters.as_mut_ptr(),
+                out.cluster_n_triangles.as_mut_ptr(), out.cluster_area.as_mut_ptr(), cap, &mut n_tri, &mut n_clusters,
+                self.as_raw(), )
         })?;
         out.triangle_clusters.truncate(n_tri.min(cap));
         out.cluster_n_triangles.truncate(n_clusters.min(cap));

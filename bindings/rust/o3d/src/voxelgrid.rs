@@ -83,7 +83,7 @@ impl VoxelGrid {
     pub fn voxel_size(&self) -> Result<f64> {
         let mut v = 0.0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_voxelgrid_get_voxel_size(self.as_raw(), &mut v) })?;
+        check(unsafe { sys::o3d_voxelgrid_get_voxel_size(&mut v, self.as_raw()) })?;
         Ok(v)
     }
 
@@ -91,7 +91,7 @@ impl VoxelGrid {
     pub fn origin(&self) -> Result<[f64; 3]> {
         let mut v = [0.0; 3];
         // SAFETY: room for 3 doubles.
-        check(unsafe { sys::o3d_voxelgrid_get_origin(self.as_raw(), v.as_mut_ptr()) })?;
+        check(unsafe { sys::o3d_voxelgrid_get_origin(v.as_mut_ptr(), self.as_raw()) })?;
         Ok(v)
     }
 
@@ -99,7 +99,7 @@ impl VoxelGrid {
     pub fn num_voxels(&self) -> Result<usize> {
         let mut n = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_voxelgrid_num_voxels(self.as_raw(), &mut n) })?;
+        check(unsafe { sys::o3d_voxelgrid_num_voxels(&mut n, self.as_raw()) })?;
         Ok(n)
     }
 
@@ -107,19 +107,14 @@ impl VoxelGrid {
     pub fn get_voxels(&self) -> Result<Vec<Voxel>> {
         let mut n = 0usize;
         // SAFETY: NULL outputs with capacity 0 only report the count.
-        check(unsafe { sys::o3d_voxelgrid_get_voxels(self.as_raw(), ptr::null_mut(), ptr::null_mut(), 0, &mut n) })?;
+        check(unsafe { sys::o3d_voxelgrid_get_voxels(ptr::null_mut(), ptr::null_mut(), 0, &mut n, self.as_raw()) })?;
         let mut index = vec![[0i32; 3]; n];
         let mut color = vec![[0.0f64; 3]; n];
         let mut written = 0usize;
         // SAFETY: room for n rows of 3 ints and n rows of 3 doubles.
         check(unsafe {
-            sys::o3d_voxelgrid_get_voxels(
-                self.as_raw(),
-                index.as_mut_ptr().cast(),
-                color.as_mut_ptr().cast(),
-                n,
-                &mut written,
-            )
+            sys::o3d_voxelgrid_get_voxels(index.as_mut_ptr().cast(), color.as_mut_ptr().cast(), n, &mut written,
+                self.as_raw(), )
         })?;
         Ok(index.into_iter().zip(color).take(written).map(|(grid_index, color)| Voxel { grid_index, color }).collect())
     }
@@ -128,7 +123,7 @@ impl VoxelGrid {
     pub fn get_voxel(&self, point: [f64; 3]) -> Result<[i32; 3]> {
         let mut out = [0i32; 3];
         // SAFETY: 3 doubles in, room for 3 ints out.
-        check(unsafe { sys::o3d_voxelgrid_get_voxel(self.as_raw(), point.as_ptr(), out.as_mut_ptr()) })?;
+        check(unsafe { sys::o3d_voxelgrid_get_voxel(out.as_mut_ptr(), self.as_raw(), point.as_ptr()) })?;
         Ok(out)
     }
 
@@ -137,12 +132,8 @@ impl VoxelGrid {
         let mut out = vec![0i32; queries.len()];
         // SAFETY: queries.len() rows of 3 doubles; one int out per query.
         check(unsafe {
-            sys::o3d_voxelgrid_check_if_included(
-                self.as_raw(),
-                queries.as_ptr().cast(),
-                queries.len(),
-                out.as_mut_ptr(),
-            )
+            sys::o3d_voxelgrid_check_if_included(out.as_mut_ptr(), self.as_raw(), queries.as_ptr().cast(),
+                queries.len(), )
         })?;
         Ok(out.into_iter().map(|v| v != 0).collect())
     }

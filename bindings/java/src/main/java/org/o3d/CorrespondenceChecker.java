@@ -81,8 +81,8 @@ public final class CorrespondenceChecker {
         int[] passed = new int[1];
         o3d_correspondence_checker_t c = toNative();
         try {
-            O3dNative.o3d_correspondence_checker_check(c, source.handle(), target.handle(), corres, n,
-                    NativeResource.fixed(transformation, 16, "transformation", true), passed);
+            O3dNative.o3d_correspondence_checker_check(passed, c, source.handle(), target.handle(), corres, n,
+                    NativeResource.fixed(transformation, 16, "transformation", true));
         } finally {
             c.delete();
         }

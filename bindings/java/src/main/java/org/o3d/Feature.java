@@ -64,7 +64,7 @@ public final class Feature extends NativeResource {
     /** Descriptor length (33 for FPFH). */
     public long dimension() {
         long[] v = new long[1];
-        O3dNative.o3d_feature_dimension(handle(), v);
+        O3dNative.o3d_feature_dimension(v, handle());
         Reference.reachabilityFence(this);
         return v[0];
     }
@@ -72,7 +72,7 @@ public final class Feature extends NativeResource {
     /** Number of descriptors (points). */
     public long num() {
         long[] v = new long[1];
-        O3dNative.o3d_feature_num(handle(), v);
+        O3dNative.o3d_feature_num(v, handle());
         Reference.reachabilityFence(this);
         return v[0];
     }
@@ -84,7 +84,7 @@ public final class Feature extends NativeResource {
     /** All dimension * num values, descriptor by descriptor (a copy). */
     public double[] data() {
         double[] values = new double[size()];
-        O3dNative.o3d_feature_get_data(handle(), values, values.length);
+        O3dNative.o3d_feature_get_data(values, values.length, handle());
         Reference.reachabilityFence(this);
         return values;
     }
@@ -105,7 +105,7 @@ public final class Feature extends NativeResource {
      */
     public ByteBuffer dataView() {
         long[] data = new long[1];
-        O3dNative.o3d_feature_data(handle(), data);
+        O3dNative.o3d_feature_data(data, handle());
         long bytes = (long) size() * Double.BYTES;
         Reference.reachabilityFence(this);
         ByteBuffer b = O3dNative.o3dj_direct_buffer(data[0], bytes);

@@ -197,7 +197,7 @@ public final class IO {
         Objects.requireNonNull(path, "path");
         o3d_pinhole_intrinsic_t n = new o3d_pinhole_intrinsic_t();
         try {
-            O3dNative.o3d_io_read_pinhole_camera_intrinsic(path, n);
+            O3dNative.o3d_io_read_pinhole_camera_intrinsic(n, path);
             return PinholeCameraIntrinsic.fromNative(n);
         } finally {
             n.delete();
@@ -219,7 +219,7 @@ public final class IO {
         double[] extrinsic = new double[16];
         o3d_pinhole_intrinsic_t n = new o3d_pinhole_intrinsic_t();
         try {
-            O3dNative.o3d_io_read_pinhole_camera_parameters(path, n, extrinsic);
+            O3dNative.o3d_io_read_pinhole_camera_parameters(n, extrinsic, path);
             return new PinholeCameraParameters(PinholeCameraIntrinsic.fromNative(n), extrinsic);
         } finally {
             n.delete();

@@ -84,10 +84,10 @@ public final class Image extends NativeResource {
     public byte[] getData() {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_image_get_data(h, null, 0, n);
+        O3dNative.o3d_image_get_array(null, 0, n, h, O3D_IMAGE_DATA);
         if (n[0] > Integer.MAX_VALUE - 8) throw new IllegalStateException("image too large for a Java array");
         byte[] out = new byte[(int) n[0]];
-        O3dNative.o3d_image_get_data(h, out, out.length, n);
+        O3dNative.o3d_image_get_array(out, out.length, n, h, O3D_IMAGE_DATA);
         Reference.reachabilityFence(this);
         return out;
     }

@@ -54,7 +54,7 @@ public final class KDTreeFlann extends NativeResource {
     /** Dimension of the indexed points (3 for trees over clouds). */
     public long dimension() {
         long[] d = new long[1];
-        O3dNative.o3d_kdtree_dimension(handle(), d);
+        O3dNative.o3d_kdtree_dimension(d, handle());
         Reference.reachabilityFence(this);
         return d[0];
     }
@@ -66,7 +66,7 @@ public final class KDTreeFlann extends NativeResource {
 
     public long size() {
         long[] n = new long[1];
-        O3dNative.o3d_kdtree_size(handle(), n);
+        O3dNative.o3d_kdtree_size(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -77,7 +77,7 @@ public final class KDTreeFlann extends NativeResource {
         long[] r = new long[1];
         o3d_search_param_t p = param.toNative();
         try {
-            O3dNative.o3d_kdtree_search(handle(), queries, m, p, numThreads, r);
+            O3dNative.o3d_kdtree_search(r, handle(), queries, m, p, numThreads);
         } finally {
             p.delete();
         }
@@ -91,7 +91,7 @@ public final class KDTreeFlann extends NativeResource {
         long[] r = new long[1];
         o3d_search_param_t p = param.toNative();
         try {
-            O3dNative.o3d_kdtree_search_f32(handle(), queries, m, p, numThreads, r);
+            O3dNative.o3d_kdtree_search_f32(r, handle(), queries, m, p, numThreads);
         } finally {
             p.delete();
         }
@@ -108,7 +108,7 @@ public final class KDTreeFlann extends NativeResource {
         long[] r = new long[1];
         o3d_search_param_t p = param.toNative();
         try {
-            O3dNative.o3d_kdtree_search_xd(handle(), queries, queries.length / d, d, p, numThreads, r);
+            O3dNative.o3d_kdtree_search_xd(r, handle(), queries, queries.length / d, d, p, numThreads);
         } finally {
             p.delete();
         }

@@ -50,14 +50,14 @@ public final class LineSet extends NativeResource {
 
     public long numPoints() {
         long[] n = new long[1];
-        O3dNative.o3d_lineset_num_points(handle(), n);
+        O3dNative.o3d_lineset_num_points(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
 
     public long numLines() {
         long[] n = new long[1];
-        O3dNative.o3d_lineset_num_lines(handle(), n);
+        O3dNative.o3d_lineset_num_lines(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -65,9 +65,9 @@ public final class LineSet extends NativeResource {
     private double[] getArray(int which) {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_lineset_get_array(h, which, null, 0, n);
+        O3dNative.o3d_lineset_get_array(null, 0, n, h, which);
         double[] out = new double[Math.toIntExact(n[0] * 3)];
-        O3dNative.o3d_lineset_get_array(h, which, out, n[0], n);
+        O3dNative.o3d_lineset_get_array(out, n[0], n, h, which);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -89,9 +89,9 @@ public final class LineSet extends NativeResource {
     public int[] getLines() {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_lineset_get_lines(h, null, 0, n);
+        O3dNative.o3d_lineset_get_index_array(null, 0, n, h, O3D_LINESET_LINES);
         int[] out = new int[Math.toIntExact(n[0] * 2)];
-        O3dNative.o3d_lineset_get_lines(h, out, n[0], n);
+        O3dNative.o3d_lineset_get_index_array(out, n[0], n, h, O3D_LINESET_LINES);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -101,7 +101,7 @@ public final class LineSet extends NativeResource {
         Objects.requireNonNull(lines, "lines");
         if (lines.length % 2 != 0)
             throw new IllegalArgumentException("lines: length " + lines.length + " is not a multiple of 2");
-        O3dNative.o3d_lineset_set_lines(handle(), lines, lines.length / 2);
+        O3dNative.o3d_lineset_set_index_array(handle(), O3D_LINESET_LINES, lines, lines.length / 2);
         Reference.reachabilityFence(this);
     }
 
@@ -109,7 +109,7 @@ public final class LineSet extends NativeResource {
     private ByteBuffer arrayView(int which) {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_lineset_array_view(handle(), which, data, n);
+        O3dNative.o3d_lineset_array_view(data, n, handle(), which);
         Reference.reachabilityFence(this);
         return readOnlyView(data[0], n[0] * 3 * Double.BYTES);
     }
@@ -120,7 +120,7 @@ public final class LineSet extends NativeResource {
     public ByteBuffer linesView() {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_lineset_lines_view(handle(), data, n);
+        O3dNative.o3d_lineset_index_array_view(data, n, handle(), O3D_LINESET_LINES);
         Reference.reachabilityFence(this);
         return readOnlyView(data[0], n[0] * 2 * Integer.BYTES);
     }

@@ -37,7 +37,7 @@ public final class Octree extends NativeResource {
     /** Min corner of the root cube. */
     public double[] origin() {
         double[] o = new double[3];
-        O3dNative.o3d_octree_get_root(handle(), o, new double[1], new int[1]);
+        O3dNative.o3d_octree_get_root(o, new double[1], new int[1], handle());
         Reference.reachabilityFence(this);
         return o;
     }
@@ -45,14 +45,14 @@ public final class Octree extends NativeResource {
     /** Edge of the root cube. */
     public double size() {
         double[] s = new double[1];
-        O3dNative.o3d_octree_get_root(handle(), null, s, new int[1]);
+        O3dNative.o3d_octree_get_root(null, s, new int[1], handle());
         Reference.reachabilityFence(this);
         return s[0];
     }
 
     public int maxDepth() {
         int[] d = new int[1];
-        O3dNative.o3d_octree_get_root(handle(), null, new double[1], d);
+        O3dNative.o3d_octree_get_root(null, new double[1], d, handle());
         Reference.reachabilityFence(this);
         return d[0];
     }
@@ -60,7 +60,7 @@ public final class Octree extends NativeResource {
     /** Number of non-empty leaves. */
     public long numLeafNodes() {
         long[] n = new long[1];
-        O3dNative.o3d_octree_num_leaf_nodes(handle(), n);
+        O3dNative.o3d_octree_num_leaf_nodes(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -74,10 +74,10 @@ public final class Octree extends NativeResource {
         double[] color = new double[3];
         o3d_octree_node_info_t info = new o3d_octree_node_info_t();
         try {
-            O3dNative.o3d_octree_locate_leaf_node(h, p, found, info, color, null, 0, n); // count query
+            O3dNative.o3d_octree_locate_leaf_node(found, info, color, null, 0, n, h, p); // count query
             if (found[0] == 0) return null;
             int[] indices = new int[Math.toIntExact(n[0])];
-            O3dNative.o3d_octree_locate_leaf_node(h, p, found, info, color, indices, n[0], n);
+            O3dNative.o3d_octree_locate_leaf_node(found, info, color, indices, n[0], n, h, p);
             double[] origin = new double[3];
             O3dNative.o3dx_octree_node_info_origin(info, origin);
             return new OctreeLeaf(new OctreeNodeInfo(origin, info.getSize(), info.getDepth(), info.getChild_index()),

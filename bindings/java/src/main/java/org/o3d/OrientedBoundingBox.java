@@ -62,7 +62,7 @@ public final class OrientedBoundingBox {
         double[] corners = new double[24];
         o3d_obb_t b = toNative();
         try {
-            O3dNative.o3d_obb_get_box_points(b, corners);
+            O3dNative.o3d_obb_get_box_points(corners, b);
         } finally {
             b.delete();
         }
@@ -77,7 +77,7 @@ public final class OrientedBoundingBox {
         long[] count = new long[1];
         o3d_obb_t b = toNative();
         try {
-            O3dNative.o3d_obb_get_point_indices_within(b, points, n, indices, n, count);
+            O3dNative.o3d_obb_get_point_indices_within(indices, n, count, b, points, n);
         } finally {
             b.delete();
         }

@@ -26,7 +26,7 @@ public final class PinholeCameraTrajectory extends NativeResource {
     /** Number of poses. */
     public long size() {
         long[] n = new long[1];
-        O3dNative.o3d_camera_trajectory_size(handle(), n);
+        O3dNative.o3d_camera_trajectory_size(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -37,7 +37,7 @@ public final class PinholeCameraTrajectory extends NativeResource {
         double[] extrinsic = new double[16];
         o3d_pinhole_intrinsic_t n = new o3d_pinhole_intrinsic_t();
         try {
-            O3dNative.o3d_camera_trajectory_get(handle(), index, n, extrinsic);
+            O3dNative.o3d_camera_trajectory_get(n, extrinsic, handle(), index);
             Reference.reachabilityFence(this);
             return new PinholeCameraParameters(PinholeCameraIntrinsic.fromNative(n), extrinsic);
         } finally {

@@ -52,28 +52,28 @@ public final class PointCloud extends NativeResource {
     /** Number of points. */
     public long size() {
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_size(handle(), n);
+        O3dNative.o3d_pointcloud_size(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
 
     public boolean hasPoints() {
         int[] v = new int[1];
-        O3dNative.o3d_pointcloud_has_points(handle(), v);
+        O3dNative.o3d_pointcloud_has_array(v, handle(), O3D_POINTCLOUD_POINTS);
         Reference.reachabilityFence(this);
         return v[0] != 0;
     }
 
     public boolean hasNormals() {
         int[] v = new int[1];
-        O3dNative.o3d_pointcloud_has_normals(handle(), v);
+        O3dNative.o3d_pointcloud_has_array(v, handle(), O3D_POINTCLOUD_NORMALS);
         Reference.reachabilityFence(this);
         return v[0] != 0;
     }
 
     public boolean hasColors() {
         int[] v = new int[1];
-        O3dNative.o3d_pointcloud_has_colors(handle(), v);
+        O3dNative.o3d_pointcloud_has_array(v, handle(), O3D_POINTCLOUD_COLORS);
         Reference.reachabilityFence(this);
         return v[0] != 0;
     }
@@ -108,33 +108,33 @@ public final class PointCloud extends NativeResource {
 
     /** Replace the points (length 3N, copied once). */
     public void setPoints(double[] xyz) {
-        O3dNative.o3d_pointcloud_set_points(handle(), xyz, rows3(xyz.length, "xyz"));
+        O3dNative.o3d_pointcloud_set_array(handle(), O3D_POINTCLOUD_POINTS, xyz, rows3(xyz.length, "xyz"));
         Reference.reachabilityFence(this);
     }
 
     /** Replace the points from float32 (converted in the single copy). */
     public void setPoints(float[] xyz) {
-        O3dNative.o3d_pointcloud_set_points_f32(handle(), xyz, rows3(xyz.length, "xyz"));
+        O3dNative.o3d_pointcloud_set_array_f32(handle(), O3D_POINTCLOUD_POINTS, xyz, rows3(xyz.length, "xyz"));
         Reference.reachabilityFence(this);
     }
 
     public void setNormals(double[] xyz) {
-        O3dNative.o3d_pointcloud_set_normals(handle(), xyz, rows3(xyz.length, "xyz"));
+        O3dNative.o3d_pointcloud_set_array(handle(), O3D_POINTCLOUD_NORMALS, xyz, rows3(xyz.length, "xyz"));
         Reference.reachabilityFence(this);
     }
 
     public void setNormals(float[] xyz) {
-        O3dNative.o3d_pointcloud_set_normals_f32(handle(), xyz, rows3(xyz.length, "xyz"));
+        O3dNative.o3d_pointcloud_set_array_f32(handle(), O3D_POINTCLOUD_NORMALS, xyz, rows3(xyz.length, "xyz"));
         Reference.reachabilityFence(this);
     }
 
     public void setColors(double[] rgb) {
-        O3dNative.o3d_pointcloud_set_colors(handle(), rgb, rows3(rgb.length, "rgb"));
+        O3dNative.o3d_pointcloud_set_array(handle(), O3D_POINTCLOUD_COLORS, rgb, rows3(rgb.length, "rgb"));
         Reference.reachabilityFence(this);
     }
 
     public void setColors(float[] rgb) {
-        O3dNative.o3d_pointcloud_set_colors_f32(handle(), rgb, rows3(rgb.length, "rgb"));
+        O3dNative.o3d_pointcloud_set_array_f32(handle(), O3D_POINTCLOUD_COLORS, rgb, rows3(rgb.length, "rgb"));
         Reference.reachabilityFence(this);
     }
 
@@ -223,7 +223,7 @@ public final class PointCloud extends NativeResource {
     public double[][] getAxisAlignedBoundingBox() {
         double[] min = new double[3];
         double[] max = new double[3];
-        O3dNative.o3d_pointcloud_get_axis_aligned_bounding_box(handle(), min, max);
+        O3dNative.o3d_pointcloud_get_axis_aligned_bounding_box(min, max, handle());
         Reference.reachabilityFence(this);
         return new double[][] {min, max};
     }
@@ -323,7 +323,7 @@ public final class PointCloud extends NativeResource {
         long n = size();
         double[] out = new double[(int) n];
         long[] outN = new long[1];
-        O3dNative.o3d_pointcloud_compute_nearest_neighbor_distance(handle(), out, n, outN, numThreads);
+        O3dNative.o3d_pointcloud_compute_nearest_neighbor_distance(out, n, outN, handle(), numThreads);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -333,7 +333,7 @@ public final class PointCloud extends NativeResource {
         long n = size();
         double[] out = new double[(int) n];
         long[] outN = new long[1];
-        O3dNative.o3d_pointcloud_compute_point_cloud_distance(handle(), target.handle(), out, n, outN, numThreads);
+        O3dNative.o3d_pointcloud_compute_point_cloud_distance(out, n, outN, handle(), target.handle(), numThreads);
         Reference.reachabilityFence(target);
         Reference.reachabilityFence(this);
         return out;
@@ -409,8 +409,8 @@ public final class PointCloud extends NativeResource {
         double[] plane = new double[4];
         int[] inliers = new int[cap];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_segment_plane(handle(), distanceThreshold, ransacN, numIterations, probability, seed,
-                plane, inliers, cap, n);
+        O3dNative.o3d_pointcloud_segment_plane(plane, inliers, cap, n, handle(), distanceThreshold, ransacN,
+                numIterations, probability, seed);
         Reference.reachabilityFence(this);
         return new PlaneSegmentationResult(plane, trim(inliers, n[0]));
     }
@@ -428,7 +428,7 @@ public final class PointCloud extends NativeResource {
         int cap = capacity();
         int[] labels = new int[cap];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_cluster_dbscan(handle(), eps, minPoints, labels, cap, n);
+        O3dNative.o3d_pointcloud_cluster_dbscan(labels, cap, n, handle(), eps, minPoints);
         Reference.reachabilityFence(this);
         return trim(labels, n[0]);
     }
@@ -437,7 +437,7 @@ public final class PointCloud extends NativeResource {
     public MeanAndCovariance computeMeanAndCovariance() {
         double[] mean = new double[3];
         double[] covariance = new double[9];
-        O3dNative.o3d_pointcloud_compute_mean_and_covariance(handle(), mean, covariance);
+        O3dNative.o3d_pointcloud_compute_mean_and_covariance(mean, covariance, handle());
         Reference.reachabilityFence(this);
         return new MeanAndCovariance(mean, covariance);
     }
@@ -447,7 +447,7 @@ public final class PointCloud extends NativeResource {
         int cap = capacity();
         double[] out = new double[cap];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_compute_mahalanobis_distance(handle(), out, cap, n);
+        O3dNative.o3d_pointcloud_compute_mahalanobis_distance(out, cap, n, handle());
         Reference.reachabilityFence(this);
         return out;
     }
@@ -515,7 +515,7 @@ public final class PointCloud extends NativeResource {
     public OrientedBoundingBox getOrientedBoundingBox(boolean robust) {
         o3d_obb_t b = new o3d_obb_t();
         try {
-            O3dNative.o3d_pointcloud_get_oriented_bounding_box(handle(), robust ? 1 : 0, b);
+            O3dNative.o3d_pointcloud_get_oriented_bounding_box(b, handle(), robust ? 1 : 0);
             Reference.reachabilityFence(this);
             return OrientedBoundingBox.fromNative(b);
         } finally {
@@ -550,7 +550,7 @@ public final class PointCloud extends NativeResource {
         int[] indices = new int[cap];
         long[] h = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_compute_convex_hull(h, handle(), joggleInputs ? 1 : 0, indices, cap, n);
+        O3dNative.o3d_pointcloud_compute_convex_hull(h, indices, cap, n, handle(), joggleInputs ? 1 : 0);
         Reference.reachabilityFence(this);
         return new ConvexHullResult(TriangleMesh.wrap(h), trim(indices, n[0]));
     }
@@ -567,7 +567,7 @@ public final class PointCloud extends NativeResource {
         int[] indices = new int[cap];
         long[] h = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_hidden_point_removal(h, handle(), cam, radius, indices, cap, n);
+        O3dNative.o3d_pointcloud_hidden_point_removal(h, indices, cap, n, handle(), cam, radius);
         Reference.reachabilityFence(this);
         return new ConvexHullResult(TriangleMesh.wrap(h), trim(indices, n[0]));
     }
@@ -577,7 +577,7 @@ public final class PointCloud extends NativeResource {
     /** True when the cloud has one covariance per point. */
     public boolean hasCovariances() {
         int[] v = new int[1];
-        O3dNative.o3d_pointcloud_has_covariances(handle(), v);
+        O3dNative.o3d_pointcloud_has_array(v, handle(), O3D_POINTCLOUD_COVARIANCES);
         Reference.reachabilityFence(this);
         return v[0] != 0;
     }
@@ -586,10 +586,10 @@ public final class PointCloud extends NativeResource {
     public double[] getCovariances() {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_get_covariances(h, null, 0, n);
+        O3dNative.o3d_pointcloud_get_array(null, 0, n, h, O3D_POINTCLOUD_COVARIANCES);
         if (n[0] * 9 > Integer.MAX_VALUE - 8) throw new IllegalStateException("cloud too large for a Java array");
         double[] out = new double[(int) (n[0] * 9)];
-        O3dNative.o3d_pointcloud_get_covariances(h, out, n[0], n);
+        O3dNative.o3d_pointcloud_get_array(out, n[0], n, h, O3D_POINTCLOUD_COVARIANCES);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -599,7 +599,7 @@ public final class PointCloud extends NativeResource {
         java.util.Objects.requireNonNull(covariances, "covariances");
         if (covariances.length % 9 != 0)
             throw new IllegalArgumentException("covariances: length " + covariances.length + " is not a multiple of 9");
-        O3dNative.o3d_pointcloud_set_covariances(handle(), covariances, covariances.length / 9);
+        O3dNative.o3d_pointcloud_set_array(handle(), O3D_POINTCLOUD_COVARIANCES, covariances, covariances.length / 9);
         Reference.reachabilityFence(this);
     }
 
@@ -607,7 +607,7 @@ public final class PointCloud extends NativeResource {
     public ByteBuffer covariancesView() {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_pointcloud_covariances_view(handle(), data, n);
+        O3dNative.o3d_pointcloud_array_view(data, n, handle(), O3D_POINTCLOUD_COVARIANCES);
         Reference.reachabilityFence(this);
         return readOnlyView(data[0], n[0] * 9 * Double.BYTES);
     }

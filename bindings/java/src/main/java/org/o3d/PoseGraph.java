@@ -35,14 +35,14 @@ public final class PoseGraph extends NativeResource {
 
     public long nodeCount() {
         long[] n = new long[1];
-        O3dNative.o3d_pose_graph_num_nodes(handle(), n);
+        O3dNative.o3d_pose_graph_num_nodes(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
 
     public long edgeCount() {
         long[] n = new long[1];
-        O3dNative.o3d_pose_graph_num_edges(handle(), n);
+        O3dNative.o3d_pose_graph_num_edges(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -56,7 +56,7 @@ public final class PoseGraph extends NativeResource {
     /** The pose of node {@code index} (16 values). */
     public double[] getNode(long index) {
         double[] pose = new double[16];
-        O3dNative.o3d_pose_graph_get_node(handle(), Feature.count(index, "index"), pose);
+        O3dNative.o3d_pose_graph_get_node(pose, handle(), Feature.count(index, "index"));
         Reference.reachabilityFence(this);
         return pose;
     }

@@ -74,7 +74,7 @@ public final class PoseGraphEdge {
     static PoseGraphEdge get(long graph, long index) {
         o3d_pose_graph_edge_t e = newNative();
         try {
-            O3dNative.o3d_pose_graph_get_edge(graph, index, e);
+            O3dNative.o3d_pose_graph_get_edge(e, graph, index);
             PoseGraphEdge edge = new PoseGraphEdge();
             edge.read(e);
             return edge;

@@ -83,8 +83,8 @@ public final class Registration {
     public static double[] getInformationMatrixFromPointClouds(PointCloud source, PointCloud target,
                                                                double maxCorrespondenceDistance, double[] transformation) {
         double[] m = new double[36];
-        O3dNative.o3d_get_information_matrix_from_point_clouds(source.handle(), target.handle(), maxCorrespondenceDistance,
-                NativeResource.fixed(transformation, 16, "transformation", false), m);
+        O3dNative.o3d_get_information_matrix_from_point_clouds(m, source.handle(), target.handle(),
+                maxCorrespondenceDistance, NativeResource.fixed(transformation, 16, "transformation", false));
         Reference.reachabilityFence(source);
         Reference.reachabilityFence(target);
         return m;
@@ -126,8 +126,8 @@ public final class Registration {
         Objects.requireNonNull(target, "target");
         int[] pairs = new int[Math.toIntExact(Math.multiplyExact(2L, source.num()))];
         long[] n = new long[1];
-        O3dNative.o3d_correspondences_from_features(source.handle(), target.handle(), mutualFilter ? 1 : 0,
-                mutualConsistencyRatio, numThreads, pairs, pairs.length / 2, n);
+        O3dNative.o3d_correspondences_from_features(pairs, pairs.length / 2, n, source.handle(), target.handle(),
+                mutualFilter ? 1 : 0, mutualConsistencyRatio, numThreads);
         Reference.reachabilityFence(source);
         Reference.reachabilityFence(target);
         return NativeResource.trimTo(pairs, 2 * n[0]);
@@ -263,7 +263,7 @@ public final class Registration {
             summary.setStruct_size(O3dNative.o3dx_sizeof_global_optimization_summary());
             o3d_global_optimization_options_t o = opts.toNative(progress);
             try {
-                O3dNative.o3d_global_optimization(graph.handle(), o, summary);
+                O3dNative.o3d_global_optimization(summary, graph.handle(), o);
             } finally {
                 o.delete();
             }

@@ -23,15 +23,15 @@ public final class RegistrationResult {
     static RegistrationResult fromNative(long r) {
         try {
             double[] t = new double[16];
-            O3dNative.o3d_registration_result_get_transformation(r, t);
+            O3dNative.o3d_registration_result_get_transformation(t, r);
             double[] f = new double[1];
             double[] rmse = new double[1];
-            O3dNative.o3d_registration_result_get_fitness(r, f);
-            O3dNative.o3d_registration_result_get_inlier_rmse(r, rmse);
+            O3dNative.o3d_registration_result_get_fitness(f, r);
+            O3dNative.o3d_registration_result_get_inlier_rmse(rmse, r);
             long[] n = new long[1];
-            O3dNative.o3d_registration_result_get_correspondence_set(r, null, 0, n);
+            O3dNative.o3d_registration_result_get_correspondence_set(null, 0, n, r);
             int[] pairs = new int[(int) (n[0] * 2)];
-            O3dNative.o3d_registration_result_get_correspondence_set(r, pairs, n[0], n);
+            O3dNative.o3d_registration_result_get_correspondence_set(pairs, n[0], n, r);
             return new RegistrationResult(t, f[0], rmse[0], pairs);
         } finally {
             O3dNative.o3d_registration_result_destroy(r);

@@ -57,7 +57,7 @@ public final class RobustKernel {
     /** The weight this kernel gives to {@code residual} (RobustKernel.weight). */
     public double weight(double residual) {
         double[] w = new double[1];
-        O3dNative.o3d_robust_kernel_weight(kind.code, k, residual, w);
+        O3dNative.o3d_robust_kernel_weight(w, kind.code, k, residual);
         return w[0];
     }
 

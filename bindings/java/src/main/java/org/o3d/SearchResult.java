@@ -18,7 +18,7 @@ public final class SearchResult extends NativeResource {
     public long[] counts() {
         long[] q = new long[1];
         long[] t = new long[1];
-        O3dNative.o3d_search_result_counts(handle(), q, t);
+        O3dNative.o3d_search_result_counts(q, t, handle());
         Reference.reachabilityFence(this);
         return new long[] {q[0], t[0]};
     }
@@ -27,7 +27,7 @@ public final class SearchResult extends NativeResource {
         long[] o = new long[1];
         long[] i = new long[1];
         long[] d = new long[1];
-        O3dNative.o3d_search_result_view(handle(), o, i, d);
+        O3dNative.o3d_search_result_view(o, i, d, handle());
         Reference.reachabilityFence(this);
         long address = which == 0 ? o[0] : which == 1 ? i[0] : d[0];
         ByteBuffer b = O3dNative.o3dj_direct_buffer(address, elements * elementBytes);
@@ -48,9 +48,9 @@ public final class SearchResult extends NativeResource {
         long[] offsets = new long[(int) c[0] + 1];
         int[] indices = new int[(int) c[1]];
         double[] d2 = new double[(int) c[1]];
-        O3dNative.o3d_search_result_get_offsets(h, offsets, offsets.length);
-        O3dNative.o3d_search_result_get_indices(h, indices, indices.length);
-        O3dNative.o3d_search_result_get_distances2(h, d2, d2.length);
+        O3dNative.o3d_search_result_get_offsets(offsets, offsets.length, h);
+        O3dNative.o3d_search_result_get_indices(indices, indices.length, h);
+        O3dNative.o3d_search_result_get_distances2(d2, d2.length, h);
         Reference.reachabilityFence(this);
         return new NeighborResult(offsets, indices, d2);
     }

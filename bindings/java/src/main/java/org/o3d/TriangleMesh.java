@@ -61,21 +61,21 @@ public final class TriangleMesh extends NativeResource {
 
     public long numVertices() {
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_num_vertices(handle(), n);
+        O3dNative.o3d_trianglemesh_num_vertices(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
 
     public long numTriangles() {
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_num_triangles(handle(), n);
+        O3dNative.o3d_trianglemesh_num_triangles(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
 
     private boolean has(int which) {
         int[] v = new int[1];
-        O3dNative.o3d_trianglemesh_has_array(handle(), which, v);
+        O3dNative.o3d_trianglemesh_has_array(v, handle(), which);
         Reference.reachabilityFence(this);
         return v[0] != 0;
     }
@@ -105,9 +105,9 @@ public final class TriangleMesh extends NativeResource {
     private double[] getArray(int which, int columns) {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_get_array(h, which, null, 0, n);
+        O3dNative.o3d_trianglemesh_get_array(null, 0, n, h, which);
         double[] out = new double[javaLength(n[0], columns)];
-        O3dNative.o3d_trianglemesh_get_array(h, which, out, n[0], n);
+        O3dNative.o3d_trianglemesh_get_array(out, n[0], n, h, which);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -121,9 +121,9 @@ public final class TriangleMesh extends NativeResource {
     private int[] getIndexArray(int which, int columns) {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_get_index_array(h, which, null, 0, n);
+        O3dNative.o3d_trianglemesh_get_index_array(null, 0, n, h, which);
         int[] out = new int[javaLength(n[0], columns)];
-        O3dNative.o3d_trianglemesh_get_index_array(h, which, out, n[0], n);
+        O3dNative.o3d_trianglemesh_get_index_array(out, n[0], n, h, which);
         Reference.reachabilityFence(this);
         return out;
     }
@@ -179,7 +179,7 @@ public final class TriangleMesh extends NativeResource {
     public ByteBuffer arrayView(MeshArray which) {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_array_view(handle(), which.code(), data, n);
+        O3dNative.o3d_trianglemesh_array_view(data, n, handle(), which.code());
         Reference.reachabilityFence(this);
         return wrapView(data[0], n[0] * columns(which) * Double.BYTES, false);
     }
@@ -187,7 +187,7 @@ public final class TriangleMesh extends NativeResource {
     public ByteBuffer arrayMutableView(MeshArray which) {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_array_mutable_view(handle(), which.code(), data, n);
+        O3dNative.o3d_trianglemesh_array_mutable_view(data, n, handle(), which.code());
         Reference.reachabilityFence(this);
         return wrapView(data[0], n[0] * columns(which) * Double.BYTES, true);
     }
@@ -195,7 +195,7 @@ public final class TriangleMesh extends NativeResource {
     public ByteBuffer indexArrayView(MeshIndexArray which) {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_index_array_view(handle(), which.code(), data, n);
+        O3dNative.o3d_trianglemesh_index_array_view(data, n, handle(), which.code());
         Reference.reachabilityFence(this);
         return wrapView(data[0], n[0] * columns(which) * Integer.BYTES, false);
     }
@@ -203,7 +203,7 @@ public final class TriangleMesh extends NativeResource {
     public ByteBuffer indexArrayMutableView(MeshIndexArray which) {
         long[] data = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_index_array_mutable_view(handle(), which.code(), data, n);
+        O3dNative.o3d_trianglemesh_index_array_mutable_view(data, n, handle(), which.code());
         Reference.reachabilityFence(this);
         return wrapView(data[0], n[0] * columns(which) * Integer.BYTES, true);
     }
@@ -212,7 +212,7 @@ public final class TriangleMesh extends NativeResource {
 
     public long textureCount() {
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_texture_count(handle(), n);
+        O3dNative.o3d_trianglemesh_texture_count(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -325,7 +325,7 @@ public final class TriangleMesh extends NativeResource {
     public double[][] getAxisAlignedBoundingBox() {
         double[] min = new double[3];
         double[] max = new double[3];
-        O3dNative.o3d_trianglemesh_get_axis_aligned_bounding_box(handle(), min, max);
+        O3dNative.o3d_trianglemesh_get_axis_aligned_bounding_box(min, max, handle());
         Reference.reachabilityFence(this);
         return new double[][] {min, max};
     }
@@ -377,7 +377,7 @@ public final class TriangleMesh extends NativeResource {
     public boolean isOrientable() { return flag(O3dNative::o3d_trianglemesh_is_orientable); }
 
     public boolean isEdgeManifold(boolean allowBoundaryEdges) {
-        return flag((m, out) -> O3dNative.o3d_trianglemesh_is_edge_manifold(m, allowBoundaryEdges ? 1 : 0, out));
+        return flag((m, out) -> O3dNative.o3d_trianglemesh_is_edge_manifold(out, m, allowBoundaryEdges ? 1 : 0));
     }
 
     public boolean isEdgeManifold() { return isEdgeManifold(true); }
@@ -385,7 +385,7 @@ public final class TriangleMesh extends NativeResource {
     /** V - E + F. */
     public long eulerPoincareCharacteristic() {
         long[] v = new long[1];
-        O3dNative.o3d_trianglemesh_euler_poincare_characteristic(handle(), v);
+        O3dNative.o3d_trianglemesh_euler_poincare_characteristic(v, handle());
         Reference.reachabilityFence(this);
         return v[0];
     }
@@ -395,12 +395,12 @@ public final class TriangleMesh extends NativeResource {
         long h = handle();
         long[] m = new long[1];
         long[] k = new long[1];
-        O3dNative.o3d_trianglemesh_cluster_connected_triangles(h, null, null, null, 0, m, k);
+        O3dNative.o3d_trianglemesh_cluster_connected_triangles(null, null, null, 0, m, k, h);
         int len = javaLength(m[0], 1);
         int[] clusters = new int[len];
         int[] counts = new int[len];
         double[] areas = new double[len];
-        O3dNative.o3d_trianglemesh_cluster_connected_triangles(h, clusters, counts, areas, len, m, k);
+        O3dNative.o3d_trianglemesh_cluster_connected_triangles(clusters, counts, areas, len, m, k, h);
         Reference.reachabilityFence(this);
         return new TriangleClusters(clusters, java.util.Arrays.copyOf(counts, (int) k[0]),
                 java.util.Arrays.copyOf(areas, (int) k[0]));
@@ -547,7 +547,7 @@ public final class TriangleMesh extends NativeResource {
     public OrientedBoundingBox getOrientedBoundingBox(boolean robust) {
         o3d_obb_t b = new o3d_obb_t();
         try {
-            O3dNative.o3d_trianglemesh_get_oriented_bounding_box(handle(), robust ? 1 : 0, b);
+            O3dNative.o3d_trianglemesh_get_oriented_bounding_box(b, handle(), robust ? 1 : 0);
             Reference.reachabilityFence(this);
             return OrientedBoundingBox.fromNative(b);
         } finally {
@@ -577,7 +577,7 @@ public final class TriangleMesh extends NativeResource {
         int[] indices = new int[cap];
         long[] h = new long[1];
         long[] n = new long[1];
-        O3dNative.o3d_trianglemesh_compute_convex_hull(h, handle(), joggleInputs ? 1 : 0, indices, cap, n);
+        O3dNative.o3d_trianglemesh_compute_convex_hull(h, indices, cap, n, handle(), joggleInputs ? 1 : 0);
         Reference.reachabilityFence(this);
         return new ConvexHullResult(wrap(h), trimTo(indices, n[0]));
     }

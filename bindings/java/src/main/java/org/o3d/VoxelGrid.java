@@ -44,7 +44,7 @@ public final class VoxelGrid extends NativeResource {
 
     public double voxelSize() {
         double[] v = new double[1];
-        O3dNative.o3d_voxelgrid_get_voxel_size(handle(), v);
+        O3dNative.o3d_voxelgrid_get_voxel_size(v, handle());
         Reference.reachabilityFence(this);
         return v[0];
     }
@@ -52,14 +52,14 @@ public final class VoxelGrid extends NativeResource {
     /** Corner of voxel (0,0,0). */
     public double[] origin() {
         double[] v = new double[3];
-        O3dNative.o3d_voxelgrid_get_origin(handle(), v);
+        O3dNative.o3d_voxelgrid_get_origin(v, handle());
         Reference.reachabilityFence(this);
         return v;
     }
 
     public long numVoxels() {
         long[] n = new long[1];
-        O3dNative.o3d_voxelgrid_num_voxels(handle(), n);
+        O3dNative.o3d_voxelgrid_num_voxels(n, handle());
         Reference.reachabilityFence(this);
         return n[0];
     }
@@ -68,11 +68,11 @@ public final class VoxelGrid extends NativeResource {
     public Voxels getVoxels() {
         long h = handle();
         long[] n = new long[1];
-        O3dNative.o3d_voxelgrid_get_voxels(h, null, null, 0, n);
+        O3dNative.o3d_voxelgrid_get_voxels(null, null, 0, n, h);
         int len = Math.toIntExact(n[0] * 3);
         int[] indices = new int[len];
         double[] colors = new double[len];
-        O3dNative.o3d_voxelgrid_get_voxels(h, indices, colors, n[0], n);
+        O3dNative.o3d_voxelgrid_get_voxels(indices, colors, n[0], n, h);
         Reference.reachabilityFence(this);
         return new Voxels(indices, colors);
     }
@@ -80,7 +80,7 @@ public final class VoxelGrid extends NativeResource {
     /** Grid index of the cell containing {@code point}, occupied or not (get_voxel). */
     public int[] getVoxel(double[] point) {
         int[] index = new int[3];
-        O3dNative.o3d_voxelgrid_get_voxel(handle(), fixed(point, 3, "point", false), index);
+        O3dNative.o3d_voxelgrid_get_voxel(index, handle(), fixed(point, 3, "point", false));
         Reference.reachabilityFence(this);
         return index;
     }
@@ -90,7 +90,7 @@ public final class VoxelGrid extends NativeResource {
         Objects.requireNonNull(points, "points");
         long n = rows3(points.length, "points");
         int[] flags = new int[(int) n];
-        O3dNative.o3d_voxelgrid_check_if_included(handle(), points, n, flags);
+        O3dNative.o3d_voxelgrid_check_if_included(flags, handle(), points, n);
         Reference.reachabilityFence(this);
         boolean[] result = new boolean[flags.length];
         for (int i = 0; i < flags.length; i++) result[i] = flags[i] != 0;

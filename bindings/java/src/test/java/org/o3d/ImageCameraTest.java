@@ -318,8 +318,8 @@ class ImageCameraTest {
         assertThrows(NullPointerException.class, () -> IO.writeImage("x.png", null));
         assertThrows(NullPointerException.class, () -> PointCloud.createFromDepthImage(null, depthCamera()));
         // NULL handles straight into the raw layer: an error, never a crash
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_image_width(0, new int[1]));
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_camera_trajectory_size(0, new long[1]));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_image_width(new int[1], 0));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_camera_trajectory_size(new long[1], 0));
         assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_rgbd_image_get_depth(new long[1], 0));
 
         Image image = new Image(2, 2);

@@ -282,7 +282,7 @@ class MeshTest {
             assertStatus(Status.UNSUPPORTED, () -> IO.writeTriangleMeshToMemory(box, "nope"));
         }
         // NULL handles straight into the raw layer: an error, never a crash
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_trianglemesh_get_volume(0, new double[1]));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_trianglemesh_get_volume(new double[1], 0));
         assertThrows(IllegalArgumentException.class, () -> O3dNative.o3d_trianglemesh_create_box(null, 1, 1, 1));
 
         TriangleMesh mesh = TriangleMesh.createBox();

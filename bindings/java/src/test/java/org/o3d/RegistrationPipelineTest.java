@@ -132,10 +132,10 @@ class RegistrationPipelineTest {
     @Test
     void nullNativeHandlesThrowO3dException() {
         long[] n = new long[1];
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_feature_num(0, n));
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_pose_graph_num_nodes(0, n));
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_kdtree_dimension(0, n));
-        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_global_optimization(0, null, null));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_feature_num(n, 0));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_pose_graph_num_nodes(n, 0));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_kdtree_dimension(n, 0));
+        assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_global_optimization(null, 0, null));
         long[] out = new long[1];
         assertStatus(Status.INVALID_ARGUMENT, () -> O3dNative.o3d_register_ransac_based_on_feature_matching(
                 out, 0, 0, 0, 0, 0.1, null, 0, null));

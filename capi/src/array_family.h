@@ -60,9 +60,6 @@ ArraySlot<T> flat_slot(std::vector<T>& v, size_t cols, bool present) {
     return s;
 }
 
-/// The first `which` of the int32 arrays (O3D_MESH_TRIANGLES, O3D_LINESET_LINES, ...).
-constexpr int32_t O3D_INDEX_ARRAY_BASE_VALUE = 100;
-
 [[noreturn]] inline void bad_which(int32_t which, const char* what) {
     throw o3d::InvalidArgument("which " + std::to_string(which) + " is not " + what);
 }
@@ -105,7 +102,6 @@ ArraySlot<int32_t> no_index_slot(H*, int32_t which) {
 
 }  // namespace o3d::capi
 
-#define O3D_INDEX_ARRAY_BASE o3d::capi::O3D_INDEX_ARRAY_BASE_VALUE
 
 /// Defines the float64 (or byte, with T = uint8_t) array functions of one geometry. `SLOT(geometry&, which)`
 /// returns its ArraySlot; `GEOM(handle)` its geometry (throwing on NULL).
@@ -130,13 +126,31 @@ ArraySlot<int32_t> no_index_slot(H*, int32_t which) {
         return o3d::capi::guard(__func__, [&] { o3d::capi::view_array(SLOT(h, which), out_data, out_rows); }); \
     }
 
-/// has_array for one geometry: `which` below 100 names a float64 (or byte) array, from 100 on an int32 one.
-#define O3D_CAPI_HAS_ARRAY(NOUN, HANDLE, SLOT, INDEX_SLOT)                                                 \
+/// has_array and array_shape for one geometry: `which` below 100 names a float64 (or byte) array, from 100
+/// on an int32 one.
+#define O3D_CAPI_ARRAY_QUERIES(NOUN, HANDLE, SLOT, INDEX_SLOT)                                             \
     O3D_API o3d_status o3d_##NOUN##_has_array(int32_t* out, const HANDLE* h, int32_t which) {              \
         return o3d::capi::guard(__func__, [&] {                                                           \
             HANDLE* g = const_cast<HANDLE*>(h);                                                           \
             *o3d::capi::require(out, "out") =                                                             \
-                (which >= O3D_INDEX_ARRAY_BASE ? INDEX_SLOT(g, which).present : SLOT(g, which).present) ? 1 : 0; \
+                (which >= O3D_INDEX_ARRAY_FIRST ? INDEX_SLOT(g, which).present : SLOT(g, which).present) ? 1 : 0; \
+        });                                                                                               \
+    }                                                                                                     \
+    O3D_API o3d_status o3d_##NOUN##_array_shape(size_t* out_rows, size_t* out_cols, const HANDLE* h,        \
+                                                int32_t which) {                                          \
+        return o3d::capi::guard(__func__, [&] {                                                           \
+            HANDLE* g = const_cast<HANDLE*>(h);                                                           \
+            o3d::capi::require(out_rows, "out_rows");                                                     \
+            o3d::capi::require(out_cols, "out_cols");                                                     \
+            if (which >= O3D_INDEX_ARRAY_FIRST) {                                                          \
+                const auto s = INDEX_SLOT(g, which);                                                      \
+                *out_rows = s.rows;                                                                       \
+                *out_cols = s.cols;                                                                       \
+            } else {                                                                                      \
+                const auto s = SLOT(g, which);                                                            \
+                *out_rows = s.rows;                                                                       \
+                *out_cols = s.cols;                                                                       \
+            }                                                                                             \
         });                                                                                               \
     }
 

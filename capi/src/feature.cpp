@@ -73,7 +73,7 @@ o3d::capi::ArraySlot<double> feature_slot(o3d_feature_t* h, int32_t which) {
 extern "C" {
 
 O3D_CAPI_ARRAYS_F64(feature, o3d_feature_t, feature_slot)
-O3D_CAPI_HAS_ARRAY(feature, o3d_feature_t, feature_slot, o3d::capi::no_index_slot)
+O3D_CAPI_ARRAY_QUERIES(feature, o3d_feature_t, feature_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_feature_create(o3d_feature_t** out, size_t dimension, size_t num) {
     return guard(__func__, [&] {

@@ -79,7 +79,7 @@ o3d::capi::ArraySlot<uint8_t> image_slot(o3d_image_t* h, int32_t which) {
 extern "C" {
 
 O3D_CAPI_ARRAYS(image, o3d_image_t, uint8_t, image_slot)
-O3D_CAPI_HAS_ARRAY(image, o3d_image_t, image_slot, o3d::capi::no_index_slot)
+O3D_CAPI_ARRAY_QUERIES(image, o3d_image_t, image_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_image_create(o3d_image_t** out, int32_t width, int32_t height, int32_t num_channels,
                                     int32_t bytes_per_channel) {

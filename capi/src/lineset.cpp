@@ -61,7 +61,7 @@ void give(o3d_lineset_t** out, LineSet lines) {
 extern "C" {
 
 O3D_CAPI_ARRAYS_F64(lineset, o3d_lineset_t, lineset_slot)
-O3D_CAPI_HAS_ARRAY(lineset, o3d_lineset_t, lineset_slot, lineset_index_slot)
+O3D_CAPI_ARRAY_QUERIES(lineset, o3d_lineset_t, lineset_slot, lineset_index_slot)
 O3D_CAPI_INDEX_ARRAYS(lineset, o3d_lineset_t, lineset_index_slot)
 
 O3D_API o3d_status o3d_lineset_create(o3d_lineset_t** out) {

@@ -127,7 +127,7 @@ o3d::capi::ArraySlot<double> cloud_slot(o3d_pointcloud_t* pc, int32_t which) {
 extern "C" {
 
 O3D_CAPI_ARRAYS_F64(pointcloud, o3d_pointcloud_t, cloud_slot)
-O3D_CAPI_HAS_ARRAY(pointcloud, o3d_pointcloud_t, cloud_slot, o3d::capi::no_index_slot)
+O3D_CAPI_ARRAY_QUERIES(pointcloud, o3d_pointcloud_t, cloud_slot, o3d::capi::no_index_slot)
 
 O3D_API o3d_status o3d_pointcloud_create(o3d_pointcloud_t** out) {
     return guard(__func__, [&] { give(require_out(out), PointCloud{}); });

@@ -81,7 +81,7 @@ int32_t flag(bool b) { return b ? 1 : 0; }
 extern "C" {
 
 O3D_CAPI_ARRAYS_F64(trianglemesh, o3d_trianglemesh_t, mesh_slot)
-O3D_CAPI_HAS_ARRAY(trianglemesh, o3d_trianglemesh_t, mesh_slot, mesh_index_slot)
+O3D_CAPI_ARRAY_QUERIES(trianglemesh, o3d_trianglemesh_t, mesh_slot, mesh_index_slot)
 O3D_CAPI_INDEX_ARRAYS(trianglemesh, o3d_trianglemesh_t, mesh_index_slot)
 
 /* ---- Container ---- */

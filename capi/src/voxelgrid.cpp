@@ -96,6 +96,31 @@ O3D_API o3d_status o3d_voxelgrid_num_voxels(size_t* out_n, const o3d_voxelgrid_t
     return guard(__func__, [&] { *require(out_n, "out_n") = grid_of(grid).voxels.size(); });
 }
 
+namespace {
+void check_voxel_which(int32_t which) {
+    if (which != O3D_VOXELGRID_COLORS && which != O3D_VOXELGRID_GRID_INDEX)
+        o3d::capi::bad_which(which, "a voxel-grid array (O3D_VOXELGRID_COLORS, O3D_VOXELGRID_GRID_INDEX)");
+}
+}  // namespace
+
+O3D_API o3d_status o3d_voxelgrid_has_array(int32_t* out, const o3d_voxelgrid_t* grid, int32_t which) {
+    return guard(__func__, [&] {
+        const VoxelGrid& g = grid_of(grid);
+        check_voxel_which(which);
+        *require(out, "out") = g.voxels.empty() ? 0 : 1;
+    });
+}
+
+O3D_API o3d_status o3d_voxelgrid_array_shape(size_t* out_rows, size_t* out_cols, const o3d_voxelgrid_t* grid,
+                                             int32_t which) {
+    return guard(__func__, [&] {
+        const VoxelGrid& g = grid_of(grid);
+        check_voxel_which(which);
+        *require(out_rows, "out_rows") = g.voxels.size();
+        *require(out_cols, "out_cols") = 3;
+    });
+}
+
 O3D_API o3d_status o3d_voxelgrid_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_voxelgrid_t* grid,
                                            int32_t which) {
     return guard(__func__, [&] {

@@ -34,6 +34,14 @@ static void test_lifecycle_and_accessors(void** state) {
     assert_int_equal(flag, 1);
     assert_int_equal(o3d_pointcloud_has_array(&flag, pc, O3D_POINTCLOUD_NORMALS), O3D_OK);
     assert_int_equal(flag, 0);
+    size_t rows = 0, cols = 0;
+    assert_int_equal(o3d_pointcloud_array_shape(&rows, &cols, pc, O3D_POINTCLOUD_POINTS), O3D_OK);
+    assert_true(rows == 4 && cols == 3);
+    assert_int_equal(o3d_pointcloud_array_shape(&rows, &cols, pc, O3D_POINTCLOUD_COVARIANCES), O3D_OK);
+    assert_true(rows == 0 && cols == 9);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_shape(&rows, &cols, pc, 7), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pointcloud_array_shape(&rows, NULL, pc, 0), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_pointcloud_has_array(&flag, pc, O3D_INDEX_ARRAY_FIRST), O3D_ERROR_INVALID_ARGUMENT);
 
     const float normals[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0.5f, 1};
     assert_int_equal(o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_NORMALS, normals, 4), O3D_OK);

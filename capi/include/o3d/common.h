@@ -61,6 +61,10 @@ typedef int32_t o3d_status;
 #define O3D_LOG_INFO 2
 #define O3D_LOG_DEBUG 3
 
+/** `which` constants of the array functions (o3d_<noun>_*_array): from this value on they name int32
+ *  (index) arrays, below it float64 (or byte) arrays. */
+#define O3D_INDEX_ARRAY_FIRST 100
+
 /** @brief Library version string, e.g. "0.1.0". Static storage. */
 O3D_API const char* o3d_version(void);
 /** @brief Library major version (equals the SONAME number). */

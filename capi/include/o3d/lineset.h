@@ -46,6 +46,11 @@ O3D_API o3d_status o3d_lineset_num_lines(size_t* out_n, const o3d_lineset_t* lin
  */
 O3D_API o3d_status o3d_lineset_has_array(int32_t* out, const o3d_lineset_t* lineset, int32_t which);
 /**
+ * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
+ * feature. @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
+ */
+O3D_API o3d_status o3d_lineset_array_shape(size_t* out_rows, size_t* out_cols, const o3d_lineset_t* lineset, int32_t which);
+/**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
  */

@@ -44,6 +44,11 @@ O3D_API o3d_status o3d_voxelgrid_num_voxels(size_t* out_n, const o3d_voxelgrid_t
  * so it has the copy-outs only. Rows are voxels, sorted by grid index (the same order in both). */
 #define O3D_VOXELGRID_COLORS 0       /**< N x 3 float64 RGB in [0,1] */
 #define O3D_VOXELGRID_GRID_INDEX 100 /**< N x 3 int32 grid indices */
+/** @brief Whether array `which` counts (the grid has voxels). @return O3D_ERROR_INVALID_ARGUMENT on NULL or an unknown `which`. */
+O3D_API o3d_status o3d_voxelgrid_has_array(int32_t* out, const o3d_voxelgrid_t* grid, int32_t which);
+/** @brief Rows (voxels) and columns (3) of array `which`. @return O3D_ERROR_INVALID_ARGUMENT on NULL or an unknown `which`. */
+O3D_API o3d_status o3d_voxelgrid_array_shape(size_t* out_rows, size_t* out_cols, const o3d_voxelgrid_t* grid,
+                                             int32_t which);
 /**
  * @brief Copy float64 array `which` into `out` (`capacity` rows); `*out_rows` always gets the rows needed,
  * `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity is short,

@@ -79,4 +79,20 @@ O3D_API o3d_status o3d_trianglemesh_create_icosahedron(o3d_trianglemesh_t** out,
     return create(__func__, out, [&] { return o3d::geometry::create_icosahedron(radius); });
 }
 
+namespace {
+const o3d_mobius_options_t kMobiusDefaults{sizeof(o3d_mobius_options_t), 70, 15, 1, 1.0, 1.0, 1.0, 1.0};
+}  // namespace
+
+O3D_API o3d_status o3d_mobius_options_init(o3d_mobius_options_t* opts, uint32_t struct_size) {
+    return o3d::capi::guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kMobiusDefaults, "opts"); });
+}
+
+O3D_API o3d_status o3d_trianglemesh_create_mobius(o3d_trianglemesh_t** out, const o3d_mobius_options_t* opts) {
+    return create(__func__, out, [&] {
+        const o3d_mobius_options_t o = o3d::capi::read_options(opts, kMobiusDefaults, "opts");
+        return o3d::geometry::create_mobius(o.length_split, o.width_split, o.twists, o.radius, o.flatness, o.width,
+                                            o.scale);
+    });
+}
+
 }  // extern "C"

@@ -153,11 +153,64 @@ static void test_bad_arguments(void** state) {
     O3D_ASSERT_FAILS(o3d_trianglemesh_create_sphere(NULL, 1, 20), O3D_ERROR_INVALID_ARGUMENT);
 }
 
+/* The Moebius strip: counts, topology (Euler characteristic 0 for any band; one-sided for odd twists)
+ * and geometry (every vertex within width/2 of the centre circle, the first column across the x axis). */
+static void test_mobius(void** state) {
+    (void)state;
+    o3d_mobius_options_t opts;
+    assert_int_equal(o3d_mobius_options_init(&opts, sizeof opts), O3D_OK);
+    assert_true(opts.length_split == 70 && opts.width_split == 15 && opts.twists == 1 && opts.radius == 1.0);
+    for (int32_t twists = 1; twists <= 2; ++twists) {
+        opts.twists = twists;
+        o3d_trianglemesh_t* m = NULL;
+        assert_int_equal(o3d_trianglemesh_create_mobius(&m, &opts), O3D_OK);
+        size_t nv = 0, nt = 0;
+        assert_int_equal(o3d_trianglemesh_num_vertices(&nv, m), O3D_OK);
+        assert_int_equal(o3d_trianglemesh_num_triangles(&nt, m), O3D_OK);
+        assert_int_equal(nv, 70 * 15);
+        assert_int_equal(nt, 2 * 70 * 14);
+        int64_t euler = -1;
+        int32_t orientable = -1, manifold = -1, watertight = -1;
+        assert_int_equal(o3d_trianglemesh_euler_poincare_characteristic(&euler, m), O3D_OK);
+        assert_int_equal(o3d_trianglemesh_is_orientable(&orientable, m), O3D_OK);
+        assert_int_equal(o3d_trianglemesh_is_edge_manifold(&manifold, m, 1), O3D_OK);
+        assert_int_equal(o3d_trianglemesh_is_watertight(&watertight, m), O3D_OK);
+        assert_int_equal(euler, 0);
+        assert_int_equal(orientable, twists % 2 == 0);
+        assert_int_equal(manifold, 1);
+        assert_int_equal(watertight, 0);
+        const double* v = NULL;
+        size_t rows = 0;
+        assert_int_equal(o3d_trianglemesh_array_view(&v, &rows, m, O3D_MESH_VERTICES), O3D_OK);
+        assert_true(fabs(v[0] - 0.5) < 1e-15 && fabs(v[3 * 14] - 1.5) < 1e-15 && v[1] == 0.0 && v[2] == 0.0);
+        for (size_t i = 0; i < rows; ++i) {
+            const double ring = sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1]) - 1.0;
+            assert_true(sqrt(ring * ring + v[3 * i + 2] * v[3 * i + 2]) <= 0.5 + 1e-12);
+        }
+        o3d_trianglemesh_destroy(m);
+    }
+    o3d_trianglemesh_t* m = NULL;
+    assert_int_equal(o3d_trianglemesh_create_mobius(&m, NULL), O3D_OK); /* NULL: the defaults */
+    o3d_trianglemesh_destroy(m);
+    m = NULL;
+    opts.twists = -1;
+    O3D_ASSERT_FAILS(o3d_trianglemesh_create_mobius(&m, &opts), O3D_ERROR_INVALID_ARGUMENT);
+    assert_null(m);
+    opts.twists = 1;
+    opts.width_split = 1;
+    O3D_ASSERT_FAILS(o3d_trianglemesh_create_mobius(&m, &opts), O3D_ERROR_INVALID_ARGUMENT);
+    opts.width_split = 15;
+    opts.struct_size = 3;
+    O3D_ASSERT_FAILS(o3d_trianglemesh_create_mobius(&m, &opts), O3D_ERROR_INVALID_ARGUMENT);
+    O3D_ASSERT_FAILS(o3d_mobius_options_init(NULL, sizeof opts), O3D_ERROR_INVALID_ARGUMENT);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_counts_areas_volumes),
         cmocka_unit_test(test_sphere_area_converges),
         cmocka_unit_test(test_bad_arguments),
+        cmocka_unit_test(test_mobius),
     };
     return cmocka_run_group_tests_name("o3d_trianglemesh_primitives", tests, NULL, NULL);
 }

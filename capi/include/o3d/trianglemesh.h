@@ -274,6 +274,32 @@ O3D_API o3d_status o3d_trianglemesh_create_arrow(o3d_trianglemesh_t** out, doubl
 /** @brief Coloured axes (x red, y green, z blue) of length `size` at `origin` (NULL: 0,0,0). */
 O3D_API o3d_status o3d_trianglemesh_create_coordinate_frame(o3d_trianglemesh_t** out, double size,
                                                             const double origin[3]);
+/** TriangleMesh.create_mobius keyword arguments. */
+typedef struct o3d_mobius_options {
+    uint32_t struct_size; /**< sizeof(o3d_mobius_options_t) */
+    int32_t length_split; /**< columns along the band, >= 3; default 70 */
+    int32_t width_split;  /**< vertices across the band, >= 2; default 15 */
+    int32_t twists;       /**< half turns along the band, >= 0 (odd: a Moebius strip); default 1 */
+    double radius;        /**< radius of the band's centre circle, > 0; default 1 */
+    double flatness;      /**< factor on z (0 flattens the band into the plane); default 1 */
+    double width;         /**< width of the band, > 0; default 1 */
+    double scale;         /**< factor on every coordinate, > 0; default 1 */
+} o3d_mobius_options_t;
+
+/**
+ * @brief Fill `opts` with the defaults (Open3D's). @param opts the struct to fill.
+ * @param struct_size sizeof(o3d_mobius_options_t) or a smaller, older size.
+ * @return O3D_ERROR_INVALID_ARGUMENT on NULL or an unknown size. Thread-safe.
+ */
+O3D_API o3d_status o3d_mobius_options_init(o3d_mobius_options_t* opts, uint32_t struct_size);
+/**
+ * @brief A twisted band about the z axis: length_split columns of width_split vertices, two triangles per
+ * cell; an odd `twists` closes it into a one-sided Moebius strip. @see TriangleMesh.create_mobius
+ * @param out receives the new mesh. **Ownership:** the caller's (o3d_trianglemesh_destroy); NULL on failure.
+ * @param opts the shape (NULL: defaults).
+ * @return O3D_ERROR_INVALID_ARGUMENT on NULL `out`, a bad struct_size or an option out of range. Thread-safe.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_mobius(o3d_trianglemesh_t** out, const o3d_mobius_options_t* opts);
 /**
  * @brief Regular solids inscribed in a sphere of `radius` about the origin (default 1), as Open3D documents
  * them (Open3D 0.20's icosahedron actually puts its vertices at 1.902 * radius; ours are at radius).

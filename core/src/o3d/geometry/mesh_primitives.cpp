@@ -156,4 +156,44 @@ TriangleMesh create_torus(double torus_radius, double tube_radius, int radial_re
     return m;
 }
 
+TriangleMesh create_mobius(int length_split, int width_split, int twists, double radius, double flatness,
+                           double width, double scale) {
+    detail::require_at_least(length_split, 3, "length_split");
+    detail::require_at_least(width_split, 2, "width_split");
+    detail::require_at_least(twists, 0, "twists");
+    detail::require_positive(radius, "radius");
+    detail::require_positive(width, "width");
+    detail::require_positive(scale, "scale");
+    if (!std::isfinite(flatness)) throw InvalidArgument("flatness must be finite");
+    detail::require_indexable(int64_t{length_split} * width_split, "create_mobius");
+    const int nl = length_split, nw = width_split;
+    TriangleMesh m;
+    m.vertices.reserve(static_cast<size_t>(int64_t{nl} * nw));
+    // Column i is the segment across the band at angle u; it turns by twists * u / 2 about the circle's tangent.
+    for (int i = 0; i < nl; ++i) {
+        const double u = 2.0 * kPi * i / nl;
+        const double turn = 0.5 * twists * u;
+        for (int j = 0; j < nw; ++j) {
+            const double v = width * (static_cast<double>(j) / (nw - 1) - 0.5);
+            const double r = radius + v * std::cos(turn);
+            m.vertices.emplace_back(scale * r * std::cos(u), scale * r * std::sin(u),
+                                    scale * flatness * v * std::sin(turn));
+        }
+    }
+    // After a full turn an odd number of twists lands each vertex on the opposite edge of column 0.
+    const bool flipped = twists % 2 == 1;
+    m.triangles.reserve(static_cast<size_t>(2 * int64_t{nl} * (nw - 1)));
+    for (int i = 0; i < nl; ++i) {
+        const bool seam = i == nl - 1;
+        const int a = i * nw, b = seam ? 0 : (i + 1) * nw;
+        for (int j = 0; j + 1 < nw; ++j) {
+            const int bj = b + (seam && flipped ? nw - 1 - j : j);
+            const int bj1 = b + (seam && flipped ? nw - 2 - j : j + 1);
+            m.triangles.emplace_back(a + j, bj, bj1);
+            m.triangles.emplace_back(a + j, bj1, a + j + 1);
+        }
+    }
+    return m;
+}
+
 }  // namespace o3d::geometry

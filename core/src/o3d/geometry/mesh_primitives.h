@@ -27,6 +27,12 @@ TriangleMesh create_arrow(double cylinder_radius = 1.0, double cone_radius = 1.5
                           double cone_height = 4.0, int resolution = 20, int cylinder_split = 4, int cone_split = 1);
 /// @brief A grey sphere at `origin` and red x, green y, blue z arrows of length `size`, with vertex normals.
 TriangleMesh create_coordinate_frame(double size = 1.0, const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
+/// @brief A band of `width` around a circle of `radius` in the xy-plane, turned by twists * 180 degrees
+/// along its length: length_split columns of width_split vertices. An odd number of twists gives a
+/// Moebius strip (one side, non-orientable), an even number an orientable band. z is multiplied by
+/// `flatness`, everything by `scale`.
+TriangleMesh create_mobius(int length_split = 70, int width_split = 15, int twists = 1, double radius = 1.0,
+                           double flatness = 1.0, double width = 1.0, double scale = 1.0);
 /// @brief Regular solids with their vertices at distance `radius` from the origin.
 TriangleMesh create_tetrahedron(double radius = 1.0);
 TriangleMesh create_octahedron(double radius = 1.0);

@@ -16,6 +16,9 @@
  * (o3d_trianglemesh_destroy). Views are borrowed: valid until the next mutating call on the mesh or
  * its destruction. On failure `*out` is left NULL. Clean-up functions edit the mesh in place;
  * processing functions write a new mesh.
+ *
+ * **Out of memory:** any function here that allocates may also return O3D_ERROR_OUT_OF_MEMORY; the
+ * per-function `@return` lists do not repeat it.
  */
 #ifndef O3D_TRIANGLEMESH_H
 #define O3D_TRIANGLEMESH_H
@@ -31,17 +34,57 @@ O3D_BEGIN_DECL
 
 /* ---- Container ---- */
 
-/** @brief New empty mesh. @see o3d.geometry.TriangleMesh() */
+/**
+ * @brief New empty mesh. @see o3d.geometry.TriangleMesh()
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create(o3d_trianglemesh_t** out);
-/** @brief Destroy. NULL is a no-op. */
+/**
+ * @brief Destroy. NULL is a no-op.
+ *
+ * Threads: needs exclusive access to `mesh`: no other call may use it during or after.
+ * @param mesh the handle to destroy (NULL is a no-op)
+ */
 O3D_API void o3d_trianglemesh_destroy(o3d_trianglemesh_t* mesh);
-/** @brief Deep copy (textures included). */
+/**
+ * @brief Deep copy (textures included).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param src the handle to copy
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_clone(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* src);
-/** @brief Remove everything (arrays and textures). */
+/**
+ * @brief Remove everything (arrays and textures).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_clear(o3d_trianglemesh_t* mesh);
-/** @brief Number of vertices. */
+/**
+ * @brief Number of vertices.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_n receives the count
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_num_vertices(size_t* out_n, const o3d_trianglemesh_t* mesh);
-/** @brief Number of triangles. */
+/**
+ * @brief Number of triangles.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_n receives the count
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trianglemesh_t* mesh);
 /* ---- Arrays: the same functions for every geometry (docs/conventions.md, "Arrays") ----
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
@@ -57,129 +100,458 @@ O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trian
 
 /**
  * @brief Whether array `which` counts (Open3D's has_*: present and of the matching size).
- * @param out receives 1 or 0. @param mesh the trianglemesh. @param which the array.
- * @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_has_array(int32_t* out, const o3d_trianglemesh_t* mesh, int32_t which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
- * feature. @return O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`. Thread-safe on a const handle.
+ * feature.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_rows receives the rows (items)
+ * @param out_cols receives the values per row
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_array_shape(size_t* out_rows, size_t* out_cols, const o3d_trianglemesh_t* mesh, int32_t which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
- * @return O3D_ERROR_INVALID_ARGUMENT on a NULL handle, NULL data with rows > 0 or an unknown `which`.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @param data `rows` rows of values, copied once (NULL allowed when rows == 0)
+ * @param rows number of rows in `data`
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
+ *   unknown `which` (or one of the other type).
  */
 O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t which, const double* data, size_t rows);
-/** @brief As o3d_trianglemesh_set_array from float32 values, converted in the one copy. */
+/**
+ * @brief As o3d_trianglemesh_set_array from float32 values, converted in the one copy.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @param data `rows` rows of values, copied once (NULL allowed when rows == 0)
+ * @param rows number of rows in `data`
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
+ *   unknown `which` (or one of the other type) or an array that takes no float32.
+ */
 O3D_API o3d_status o3d_trianglemesh_set_array_f32(o3d_trianglemesh_t* mesh, int32_t which, const float* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
- * needed. `out` NULL only reports them. @return O3D_ERROR_BUFFER_TOO_SMALL when capacity < rows,
- * O3D_ERROR_INVALID_ARGUMENT on a NULL handle or out_rows or an unknown `which`.
+ * needed. `out` NULL only reports them.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` rows (NULL: only report the row count)
+ * @param capacity rows `out` holds
+ * @param out_rows receives the rows of the array (always, also when `out` is NULL or too small)
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle or `out_rows` or an unknown `which`;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_trianglemesh_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_trianglemesh_t* mesh,
                                               int32_t which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
- * **Ownership:** the library's; valid until the next mutating call on `mesh` or its destruction.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out_data` points into `mesh` (the library's memory, never to be freed): valid until the next mutating
+ * call on `mesh` or its destruction.
+ * @param out_data receives the address of row 0 (NULL when the array is empty)
+ * @param out_rows receives the row count
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_array_view(const double** out_data, size_t* out_rows, const o3d_trianglemesh_t* mesh,
                                                int32_t which);
-/** @brief Borrowed writable view of array `which`: as o3d_trianglemesh_array_view; writing through it is a mutating call. */
+/**
+ * @brief Borrowed writable view of array `which`: as o3d_trianglemesh_array_view; writing through it is a mutating
+ * call.
+ *
+ * Threads: needs exclusive access to `mesh`, also while the view is written through.
+ * Ownership: `*out_data` points into `mesh` (the library's memory, never to be freed): valid until the next mutating
+ * call on `mesh` or its destruction.
+ * @param out_data receives the address of row 0 (NULL when the array is empty)
+ * @param out_rows receives the row count
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
+ */
 O3D_API o3d_status o3d_trianglemesh_array_mutable_view(double** out_data, size_t* out_rows, o3d_trianglemesh_t* mesh,
                                                        int32_t which);
-/** @brief Replace int32 array `which` with `rows` rows of `data` (copied once), as o3d_trianglemesh_set_array. */
+/**
+ * @brief Replace int32 array `which` with `rows` rows of `data` (copied once), as o3d_trianglemesh_set_array.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @param data `rows` rows of values, copied once (NULL allowed when rows == 0)
+ * @param rows number of rows in `data`
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
+ *   unknown `which` (or one of the other type).
+ */
 O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, int32_t which, const int32_t* data, size_t rows);
-/** @brief Copy int32 array `which` out, with the copy-out rules of o3d_trianglemesh_get_array. */
+/**
+ * @brief Copy int32 array `which` out, with the copy-out rules of o3d_trianglemesh_get_array.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` rows (NULL: only report the row count)
+ * @param capacity rows `out` holds
+ * @param out_rows receives the rows of the array (always, also when `out` is NULL or too small)
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle or `out_rows` or an unknown `which`;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
+ */
 O3D_API o3d_status o3d_trianglemesh_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
                                                     const o3d_trianglemesh_t* mesh, int32_t which);
-/** @brief Borrowed read-only view of int32 array `which` (ownership as o3d_trianglemesh_array_view). */
+/**
+ * @brief Borrowed read-only view of int32 array `which` (ownership as o3d_trianglemesh_array_view).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out_data` points into `mesh` (the library's memory, never to be freed): valid until the next mutating
+ * call on `mesh` or its destruction.
+ * @param out_data receives the address of row 0 (NULL when the array is empty)
+ * @param out_rows receives the row count
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
+ */
 O3D_API o3d_status o3d_trianglemesh_index_array_view(const int32_t** out_data, size_t* out_rows,
                                                      const o3d_trianglemesh_t* mesh, int32_t which);
-/** @brief Borrowed writable view of int32 array `which`; writing through it is a mutating call. */
+/**
+ * @brief Borrowed writable view of int32 array `which`; writing through it is a mutating call.
+ *
+ * Threads: needs exclusive access to `mesh`, also while the view is written through.
+ * Ownership: `*out_data` points into `mesh` (the library's memory, never to be freed): valid until the next mutating
+ * call on `mesh` or its destruction.
+ * @param out_data receives the address of row 0 (NULL when the array is empty)
+ * @param out_rows receives the row count
+ * @param mesh the mesh
+ * @param which the array: one of this header's `which` constants
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
+ */
 O3D_API o3d_status o3d_trianglemesh_index_array_mutable_view(int32_t** out_data, size_t* out_rows,
                                                              o3d_trianglemesh_t* mesh, int32_t which);
 
-/** @brief Number of texture images. */
+/**
+ * @brief Number of texture images.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_n receives the count
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_texture_count(size_t* out_n, const o3d_trianglemesh_t* mesh);
-/** @brief Copy of texture `index` as a new image (caller destroys it). */
+/**
+ * @brief Copy of texture `index` as a new image (caller destroys it).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_image_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param index zero-based index (must be below the count)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or `index` out of range.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_texture(o3d_image_t** out, const o3d_trianglemesh_t* mesh, size_t index);
-/** @brief Append a copy of `image` to the textures. */
+/**
+ * @brief Append a copy of `image` to the textures.
+ *
+ * Threads: needs exclusive access to `mesh`; `image` is only read.
+ * @param mesh the mesh
+ * @param image the image
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_add_texture(o3d_trianglemesh_t* mesh, const o3d_image_t* image);
-/** @brief Remove all textures. */
+/**
+ * @brief Remove all textures.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_clear_textures(o3d_trianglemesh_t* mesh);
 
-/** @brief Concatenate `other` onto `mesh` (Open3D `mesh += other`), re-indexing its triangles. */
+/**
+ * @brief Concatenate `other` onto `mesh` (Open3D `mesh += other`), re-indexing its triangles.
+ *
+ * Threads: needs exclusive access to `mesh`; `other` is only read.
+ * @param mesh the mesh
+ * @param other the geometry appended (only read)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_append(o3d_trianglemesh_t* mesh, const o3d_trianglemesh_t* other);
 
 /* ---- Normals, colors, transforms, bounds (as for point clouds) ---- */
 
-/** @brief Area-weighted vertex normals from the triangle normals (unit length when normalized != 0). */
+/**
+ * @brief Area-weighted vertex normals from the triangle normals (unit length when normalized != 0).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param normalized non-zero scales the normals to unit length
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_compute_vertex_normals(o3d_trianglemesh_t* mesh, int32_t normalized);
-/** @brief Triangle normals (b - a) x (c - a) (unit length when normalized != 0). */
+/**
+ * @brief Triangle normals (b - a) x (c - a) (unit length when normalized != 0).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param normalized non-zero scales the normals to unit length
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_compute_triangle_normals(o3d_trianglemesh_t* mesh, int32_t normalized);
-/** @brief Scale vertex and triangle normals to unit length. */
+/**
+ * @brief Scale vertex and triangle normals to unit length.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_normalize_normals(o3d_trianglemesh_t* mesh);
-/** @brief Set every vertex color to `rgb`. */
+/**
+ * @brief Set every vertex color to `rgb`.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param rgb the color, each channel in [0,1]
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_paint_uniform_color(o3d_trianglemesh_t* mesh, const double rgb[3]);
-/** @brief Apply a row-major 4x4 transform to the vertices (normals rotated). */
+/**
+ * @brief Apply a row-major 4x4 transform to the vertices (normals rotated).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param transform row-major 4x4 transform
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_transform(o3d_trianglemesh_t* mesh, const double transform[16]);
-/** @brief relative != 0: add `t`; relative == 0: move the center to `t`. */
+/**
+ * @brief relative != 0: add `t`; relative == 0: move the center to `t`.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param translation the translation, or the new center
+ * @param relative non-zero: add `translation`; 0: move the center there
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_translate(o3d_trianglemesh_t* mesh, const double translation[3],
                                               int32_t relative);
-/** @brief Rotate by row-major 3x3 `R` about `center` (NULL: the mesh's center). */
+/**
+ * @brief Rotate by row-major 3x3 `R` about `center` (NULL: the mesh's center).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param rotation row-major 3x3 rotation matrix
+ * @param center the pivot (NULL: the geometry's center)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_rotate(o3d_trianglemesh_t* mesh, const double rotation[9],
                                            const double center[3]);
-/** @brief Scale about `center` (NULL: the mesh's center). */
+/**
+ * @brief Scale about `center` (NULL: the mesh's center).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param scale the scale factor
+ * @param center the pivot (NULL: the geometry's center)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_scale(o3d_trianglemesh_t* mesh, double scale, const double center[3]);
-/** @brief Component-wise minimum of the vertices ((0,0,0) when empty). */
+/**
+ * @brief Component-wise minimum of the vertices ((0,0,0) when empty).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_min_bound(double out[3], const o3d_trianglemesh_t* mesh);
+/**
+ * @brief Component-wise maximum of the vertices ((0,0,0) when empty).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_max_bound(double out[3], const o3d_trianglemesh_t* mesh);
-/** @brief Mean of the vertices ((0,0,0) when empty). */
+/**
+ * @brief Mean of the vertices ((0,0,0) when empty).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_center(double out[3], const o3d_trianglemesh_t* mesh);
+/**
+ * @brief Axis-aligned bounding box as min and max corners.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_min receives the minimum corner
+ * @param out_max receives the maximum corner
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_axis_aligned_bounding_box(double out_min[3], double out_max[3],
                                                                   const o3d_trianglemesh_t* mesh);
 
 /* ---- Clean-up (in place; each keeps the attributes of what it keeps) ---- */
 
-/** @brief Merge vertices with exactly equal coordinates, re-indexing the triangles. */
+/**
+ * @brief Merge vertices with exactly equal coordinates, re-indexing the triangles.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_remove_duplicated_vertices(o3d_trianglemesh_t* mesh);
-/** @brief Remove triangles with the same three vertices (in any order). */
+/**
+ * @brief Remove triangles with the same three vertices (in any order).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_remove_duplicated_triangles(o3d_trianglemesh_t* mesh);
-/** @brief Remove triangles that repeat a vertex index. */
+/**
+ * @brief Remove triangles that repeat a vertex index.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_remove_degenerate_triangles(o3d_trianglemesh_t* mesh);
-/** @brief Remove vertices no triangle uses. */
+/**
+ * @brief Remove vertices no triangle uses.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_remove_unreferenced_vertices(o3d_trianglemesh_t* mesh);
-/** @brief Remove the smallest-area triangles on each edge shared by more than two, until all are manifold. */
+/**
+ * @brief Remove the smallest-area triangles on each edge shared by more than two, until all are manifold.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_remove_non_manifold_edges(o3d_trianglemesh_t* mesh);
-/** @brief Merge vertices closer than `eps` (>= 0) into their mean (normals and colors averaged). */
+/**
+ * @brief Merge vertices closer than `eps` (>= 0) into their mean (normals and colors averaged).
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param eps the distance threshold (>= 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_merge_close_vertices(o3d_trianglemesh_t* mesh, double eps);
 
 /* ---- Queries ---- */
 
-/** @brief Sum of the triangle areas. */
+/**
+ * @brief Sum of the triangle areas.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_surface_area(double* out, const o3d_trianglemesh_t* mesh);
-/** @brief Enclosed volume; a mesh that is not watertight and orientable fails with INVALID_ARGUMENT. */
+/**
+ * @brief Enclosed volume; a mesh that is not watertight and orientable fails with INVALID_ARGUMENT.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_volume(double* out, const o3d_trianglemesh_t* mesh);
-/** @brief Edge- and vertex-manifold, no boundary edges, not self-intersecting. */
+/**
+ * @brief Edge- and vertex-manifold, no boundary edges, not self-intersecting.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_is_watertight(int32_t* out, const o3d_trianglemesh_t* mesh);
-/** @brief Every edge in one or two triangles (only two when allow_boundary_edges == 0). */
+/**
+ * @brief Every edge in one or two triangles (only two when allow_boundary_edges == 0).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @param allow_boundary_edges non-zero accepts edges in one triangle
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_is_edge_manifold(int32_t* out, const o3d_trianglemesh_t* mesh,
                                                      int32_t allow_boundary_edges);
-/** @brief The triangles around every vertex form one fan. */
+/**
+ * @brief The triangles around every vertex form one fan.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_is_vertex_manifold(int32_t* out, const o3d_trianglemesh_t* mesh);
-/** @brief Some two triangles that share no vertex intersect. */
+/**
+ * @brief Some two triangles that share no vertex intersect.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_is_self_intersecting(int32_t* out, const o3d_trianglemesh_t* mesh);
-/** @brief The triangles can be oriented consistently. */
+/**
+ * @brief The triangles can be oriented consistently.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_is_orientable(int32_t* out, const o3d_trianglemesh_t* mesh);
-/** @brief V - E + F. */
+/**
+ * @brief V - E + F.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_euler_poincare_characteristic(int64_t* out, const o3d_trianglemesh_t* mesh);
 /**
  * @brief Edge-connected components. `out_triangle_clusters` gets each triangle's cluster (numbered by
  * lowest triangle index), `out_cluster_n_triangles` and `out_cluster_area` each cluster's size and area.
  * All three buffers hold `capacity` values (num_triangles always fits); any may be NULL to skip it.
  * `*out_num_triangles` and `*out_num_clusters` always get the counts.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out_triangle_clusters receives each triangle's cluster (NULL skips it)
+ * @param out_cluster_n_triangles receives each cluster's triangle count (NULL skips it)
+ * @param out_cluster_area receives each cluster's area (NULL skips it)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_num_triangles receives the number of triangles
+ * @param out_num_clusters receives the number of clusters
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer; O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is
+ *   short (the count is still reported).
  */
 O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(int32_t* out_triangle_clusters,
                                                                 int32_t* out_cluster_n_triangles,
@@ -193,6 +565,15 @@ O3D_API o3d_status o3d_trianglemesh_cluster_connected_triangles(int32_t* out_tri
  * @brief `number_of_points` points uniformly on the surface (area-weighted). Normals from the triangle
  * normals (use_triangle_normal != 0) or interpolated vertex normals; colors interpolated. Same seed →
  * same output. @see sample_points_uniformly
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_points how many points to sample
+ * @param use_triangle_normal non-zero: each point gets its triangle's normal, 0: interpolated vertex normals
+ * @param seed random seed: the same seed gives the same output
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_sample_points_uniformly(o3d_pointcloud_t** out, const o3d_trianglemesh_t* mesh,
                                                             size_t number_of_points, int32_t use_triangle_normal,
@@ -200,6 +581,16 @@ O3D_API o3d_status o3d_trianglemesh_sample_points_uniformly(o3d_pointcloud_t** o
 /**
  * @brief Poisson-disk samples by sample elimination (Yuksel 2015) from init_factor * number_of_points
  * uniform samples (init_factor >= 1; Open3D's default 5). @see sample_points_poisson_disk
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_points how many points to sample
+ * @param init_factor initial samples per output point (>= 1)
+ * @param use_triangle_normal non-zero: each point gets its triangle's normal, 0: interpolated vertex normals
+ * @param seed random seed: the same seed gives the same output
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_sample_points_poisson_disk(o3d_pointcloud_t** out,
                                                                const o3d_trianglemesh_t* mesh,
@@ -208,7 +599,17 @@ O3D_API o3d_status o3d_trianglemesh_sample_points_poisson_disk(o3d_pointcloud_t*
 
 #define O3D_SIMPLIFICATION_AVERAGE 0 /**< vertex clustering: cluster vertex = mean */
 #define O3D_SIMPLIFICATION_QUADRIC 1 /**< vertex clustering: cluster vertex minimises the quadric error */
-/** @brief Vertex clustering on a voxel grid of edge `voxel_size` > 0. @see simplify_vertex_clustering */
+/**
+ * @brief Vertex clustering on a voxel grid of edge `voxel_size` > 0. @see simplify_vertex_clustering
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param voxel_size voxel edge length (> 0)
+ * @param contraction O3D_SIMPLIFICATION_*
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_simplify_vertex_clustering(o3d_trianglemesh_t** out,
                                                                const o3d_trianglemesh_t* mesh, double voxel_size,
                                                                int32_t contraction);
@@ -216,6 +617,15 @@ O3D_API o3d_status o3d_trianglemesh_simplify_vertex_clustering(o3d_trianglemesh_
  * @brief Quadric edge-collapse decimation (Garland & Heckbert 1997) down to `target_number_of_triangles`,
  * stopping early when the cheapest collapse costs more than `maximum_error` (INFINITY: no limit);
  * `boundary_weight` weights the boundary-preserving quadrics (Open3D default 1).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param target_number_of_triangles triangles to keep
+ * @param maximum_error stop when the cheapest collapse costs more (INFINITY: no limit)
+ * @param boundary_weight weight of the boundary-preserving quadrics
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_simplify_quadric_decimation(o3d_trianglemesh_t** out,
                                                                 const o3d_trianglemesh_t* mesh,
@@ -223,55 +633,189 @@ O3D_API o3d_status o3d_trianglemesh_simplify_quadric_decimation(o3d_trianglemesh
                                                                 double maximum_error, double boundary_weight);
 
 #define O3D_FILTER_SCOPE_ALL 0    /**< positions, normals and colors */
-#define O3D_FILTER_SCOPE_COLOR 1
-#define O3D_FILTER_SCOPE_NORMAL 2
-#define O3D_FILTER_SCOPE_VERTEX 3
-/** @brief Average of each vertex and its neighbours, `number_of_iterations` times. */
+#define O3D_FILTER_SCOPE_COLOR 1 /**< colors only */
+#define O3D_FILTER_SCOPE_NORMAL 2 /**< normals only */
+#define O3D_FILTER_SCOPE_VERTEX 3 /**< positions only */
+/**
+ * @brief Average of each vertex and its neighbours, `number_of_iterations` times.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations how many times to apply the step (>= 1)
+ * @param filter_scope what to filter: O3D_FILTER_SCOPE_*
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_simple(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                                          int32_t number_of_iterations, int32_t filter_scope);
 /**
  * @brief Laplacian smoothing v += lambda * (weighted mean of neighbours - v), neighbours weighted by inverse
  * distance as in Open3D (default lambda 0.5).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations how many times to apply the step (>= 1)
+ * @param lambda_filter the Laplacian step (lambda)
+ * @param filter_scope what to filter: O3D_FILTER_SCOPE_*
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_laplacian(o3d_trianglemesh_t** out,
                                                             const o3d_trianglemesh_t* mesh,
                                                             int32_t number_of_iterations, double lambda_filter,
                                                             int32_t filter_scope);
-/** @brief Taubin smoothing: alternating Laplacian steps with lambda and mu (defaults 0.5, -0.53). */
+/**
+ * @brief Taubin smoothing: alternating Laplacian steps with lambda and mu (defaults 0.5, -0.53).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations how many times to apply the step (>= 1)
+ * @param lambda_filter the Laplacian step (lambda)
+ * @param mu the second (negative) step
+ * @param filter_scope what to filter: O3D_FILTER_SCOPE_*
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_taubin(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                                          int32_t number_of_iterations, double lambda_filter,
                                                          double mu, int32_t filter_scope);
-/** @brief Split every triangle into four at its edge midpoints, `number_of_iterations` times. */
+/**
+ * @brief Split every triangle into four at its edge midpoints, `number_of_iterations` times.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations how many times to apply the step (>= 1)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_subdivide_midpoint(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                                        int32_t number_of_iterations);
-/** @brief Loop subdivision (Loop 1987), `number_of_iterations` times. */
+/**
+ * @brief Loop subdivision (Loop 1987), `number_of_iterations` times.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations how many times to apply the step (>= 1)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_subdivide_loop(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                                    int32_t number_of_iterations);
-/** @brief Triangles whose three vertices lie in [min_bound, max_bound] (unused vertices dropped). */
+/**
+ * @brief Triangles whose three vertices lie in [min_bound, max_bound] (unused vertices dropped).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param min_bound minimum corner (x, y, z)
+ * @param max_bound maximum corner (x, y, z)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_crop_aabb(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                               const double min_bound[3], const double max_bound[3]);
 
 /* ---- Primitives (Open3D's create_* with its defaults noted) ---- */
 
-/** @brief Box [0,w] x [0,h] x [0,d] (defaults 1, 1, 1). */
+/**
+ * @brief Box [0,w] x [0,h] x [0,d] (defaults 1, 1, 1).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param width the width
+ * @param height the height
+ * @param depth the depth image
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_box(o3d_trianglemesh_t** out, double width, double height,
                                                double depth);
-/** @brief UV sphere about the origin (defaults radius 1, resolution 20). */
+/**
+ * @brief UV sphere about the origin (defaults radius 1, resolution 20).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @param resolution segments around the axis
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_sphere(o3d_trianglemesh_t** out, double radius, int32_t resolution);
-/** @brief Cylinder along z centred at the origin (defaults 1, 2, resolution 20, split 4). */
+/**
+ * @brief Cylinder along z centred at the origin (defaults 1, 2, resolution 20, split 4).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @param height the height
+ * @param resolution segments around the axis
+ * @param split segments along the axis
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_cylinder(o3d_trianglemesh_t** out, double radius, double height,
                                                     int32_t resolution, int32_t split);
-/** @brief Cone along z with its base at z = 0 (defaults 1, 2, resolution 20, split 1). */
+/**
+ * @brief Cone along z with its base at z = 0 (defaults 1, 2, resolution 20, split 1).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @param height the height
+ * @param resolution segments around the axis
+ * @param split segments along the axis
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_cone(o3d_trianglemesh_t** out, double radius, double height,
                                                 int32_t resolution, int32_t split);
-/** @brief Torus about z (defaults 1, 0.5, radial 30, tubular 20). */
+/**
+ * @brief Torus about z (defaults 1, 0.5, radial 30, tubular 20).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param torus_radius radius of the centre circle
+ * @param tube_radius radius of the tube
+ * @param radial_resolution segments around the z axis
+ * @param tubular_resolution segments around the tube
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_torus(o3d_trianglemesh_t** out, double torus_radius, double tube_radius,
                                                  int32_t radial_resolution, int32_t tubular_resolution);
-/** @brief Arrow along z: a cylinder then a cone (defaults 1, 1.5, 5, 4, 20, 4, 1). */
+/**
+ * @brief Arrow along z: a cylinder then a cone (defaults 1, 1.5, 5, 4, 20, 4, 1).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param cylinder_radius cylinder radius
+ * @param cone_radius cone radius
+ * @param cylinder_height cylinder height
+ * @param cone_height cone height
+ * @param resolution segments around the axis
+ * @param cylinder_split segments along the cylinder
+ * @param cone_split segments along the cone
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_arrow(o3d_trianglemesh_t** out, double cylinder_radius,
                                                  double cone_radius, double cylinder_height, double cone_height,
                                                  int32_t resolution, int32_t cylinder_split, int32_t cone_split);
-/** @brief Coloured axes (x red, y green, z blue) of length `size` at `origin` (NULL: 0,0,0). */
+/**
+ * @brief Coloured axes (x red, y green, z blue) of length `size` at `origin` (NULL: 0,0,0).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param size number of bytes at `data`
+ * @param origin the frame origin (NULL: 0,0,0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_coordinate_frame(o3d_trianglemesh_t** out, double size,
                                                             const double origin[3]);
 /** TriangleMesh.create_mobius keyword arguments. */
@@ -287,40 +831,101 @@ typedef struct o3d_mobius_options {
 } o3d_mobius_options_t;
 
 /**
- * @brief Fill `opts` with the defaults (Open3D's). @param opts the struct to fill.
- * @param struct_size sizeof(o3d_mobius_options_t) or a smaller, older size.
- * @return O3D_ERROR_INVALID_ARGUMENT on NULL or an unknown size. Thread-safe.
+ * @brief Fill `opts` with the defaults (Open3D's).
+ *
+ * Threads: any thread.
+ * @param opts the struct to fill
+ * @param struct_size sizeof the struct as the caller knows it (an older, smaller size is accepted)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know.
  */
 O3D_API o3d_status o3d_mobius_options_init(o3d_mobius_options_t* opts, uint32_t struct_size);
 /**
  * @brief A twisted band about the z axis: length_split columns of width_split vertices, two triangles per
  * cell; an odd `twists` closes it into a one-sided Moebius strip. @see TriangleMesh.create_mobius
- * @param out receives the new mesh. **Ownership:** the caller's (o3d_trianglemesh_destroy); NULL on failure.
- * @param opts the shape (NULL: defaults).
- * @return O3D_ERROR_INVALID_ARGUMENT on NULL `out`, a bad struct_size or an option out of range. Thread-safe.
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a bad `opts->struct_size`.
  */
 O3D_API o3d_status o3d_trianglemesh_create_mobius(o3d_trianglemesh_t** out, const o3d_mobius_options_t* opts);
 /**
  * @brief Regular solids inscribed in a sphere of `radius` about the origin (default 1), as Open3D documents
  * them (Open3D 0.20's icosahedron actually puts its vertices at 1.902 * radius; ours are at radius).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_create_tetrahedron(o3d_trianglemesh_t** out, double radius);
+/**
+ * @brief Regular octahedron inscribed in a sphere of `radius` (default 1).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_octahedron(o3d_trianglemesh_t** out, double radius);
+/**
+ * @brief Regular icosahedron inscribed in a sphere of `radius` (default 1).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius the radius (> 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_create_icosahedron(o3d_trianglemesh_t** out, double radius);
 
 /* ---- Convex hull (Qhull) ---- */
 
-/** @brief Convex hull of a mesh's vertices. @see TriangleMesh.compute_convex_hull */
+/**
+ * @brief Convex hull of a mesh's vertices. @see TriangleMesh.compute_convex_hull
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out_mesh` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out_mesh receives the new handle (NULL on failure)
+ * @param out_point_indices receives the indices of the hull vertices in the input (`capacity` values; NULL skips
+ *   them)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param mesh the mesh
+ * @param joggle_inputs non-zero lets Qhull perturb the input ("QJ") so degenerate sets still give a hull
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer; O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is
+ *   short (the count is still reported).
+ */
 O3D_API o3d_status o3d_trianglemesh_compute_convex_hull(o3d_trianglemesh_t** out_mesh, int32_t* out_point_indices,
                                                         size_t capacity, size_t* out_n,
                                                         const o3d_trianglemesh_t* mesh, int32_t joggle_inputs);
 
 /* ---- Oriented bounding boxes ---- */
 
-/** @brief Oriented box of a mesh's vertices. @see TriangleMesh.get_oriented_bounding_box(robust) */
+/**
+ * @brief Oriented box of a mesh's vertices. @see TriangleMesh.get_oriented_bounding_box(robust)
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the result
+ * @param mesh the mesh
+ * @param robust non-zero joggles the input so degenerate (e.g. planar) point sets still give a box
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(o3d_obb_t* out, const o3d_trianglemesh_t* mesh,
                                                               int32_t robust);
-/** @brief Triangles whose three vertices lie inside `obb` (unused vertices dropped). @see TriangleMesh.crop */
+/**
+ * @brief Triangles whose three vertices lie inside `obb` (unused vertices dropped). @see TriangleMesh.crop
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param obb the oriented box
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
 O3D_API o3d_status o3d_trianglemesh_crop_obb(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                              const o3d_obb_t* obb);
 

@@ -14,19 +14,19 @@
 
 O3D_BEGIN_DECL
 
-typedef struct o3d_camera_trajectory o3d_camera_trajectory_t;
-typedef struct o3d_feature o3d_feature_t;
-typedef struct o3d_image o3d_image_t;
-typedef struct o3d_kdtree o3d_kdtree_t;
-typedef struct o3d_lineset o3d_lineset_t;
-typedef struct o3d_octree o3d_octree_t;
-typedef struct o3d_pointcloud o3d_pointcloud_t;
-typedef struct o3d_pose_graph o3d_pose_graph_t;
-typedef struct o3d_registration_result o3d_registration_result_t;
-typedef struct o3d_rgbd_image o3d_rgbd_image_t;
-typedef struct o3d_search_result o3d_search_result_t;
-typedef struct o3d_trianglemesh o3d_trianglemesh_t;
-typedef struct o3d_voxelgrid o3d_voxelgrid_t;
+typedef struct o3d_camera_trajectory o3d_camera_trajectory_t; /**< opaque handle */
+typedef struct o3d_feature o3d_feature_t; /**< opaque handle */
+typedef struct o3d_image o3d_image_t; /**< opaque handle */
+typedef struct o3d_kdtree o3d_kdtree_t; /**< opaque handle */
+typedef struct o3d_lineset o3d_lineset_t; /**< opaque handle */
+typedef struct o3d_octree o3d_octree_t; /**< opaque handle */
+typedef struct o3d_pointcloud o3d_pointcloud_t; /**< opaque handle */
+typedef struct o3d_pose_graph o3d_pose_graph_t; /**< opaque handle */
+typedef struct o3d_registration_result o3d_registration_result_t; /**< opaque handle */
+typedef struct o3d_rgbd_image o3d_rgbd_image_t; /**< opaque handle */
+typedef struct o3d_search_result o3d_search_result_t; /**< opaque handle */
+typedef struct o3d_trianglemesh o3d_trianglemesh_t; /**< opaque handle */
+typedef struct o3d_voxelgrid o3d_voxelgrid_t; /**< opaque handle */
 
 O3D_END_DECL
 

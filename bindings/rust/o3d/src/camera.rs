@@ -1,11 +1,10 @@
 //! Pinhole cameras (o3d.camera): [`PinholeIntrinsic`] (a plain value) and [`CameraTrajectory`].
 use std::fmt;
-use std::ptr::NonNull;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Result};
-use crate::util::{adopt, mat4_ptr};
+use crate::util::{handle, mat4_ptr};
 
 /// o3d.camera.PinholeCameraIntrinsic: image size, focal lengths and principal point in pixels.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -86,19 +85,9 @@ pub struct PinholeCameraParameters {
     pub extrinsic: [[f64; 4]; 4],
 }
 
-/// o3d.camera.PinholeCameraTrajectory: a list of camera poses. Owns an `o3d_camera_trajectory_t`.
-pub struct CameraTrajectory {
-    raw: NonNull<sys::o3d_camera_trajectory_t>,
-}
-
-// SAFETY: `&self` methods make only `const` C calls; mutation takes `&mut self`.
-unsafe impl Send for CameraTrajectory {}
-unsafe impl Sync for CameraTrajectory {}
-
-pub(crate) fn new_trajectory(
-    f: impl FnOnce(*mut *mut sys::o3d_camera_trajectory_t) -> sys::o3d_status,
-) -> Result<CameraTrajectory> {
-    adopt("trajectory", f, |raw| CameraTrajectory { raw })
+handle! {
+    /// o3d.camera.PinholeCameraTrajectory: a list of camera poses. Owns an `o3d_camera_trajectory_t`.
+    CameraTrajectory(sys::o3d_camera_trajectory_t, "trajectory"), new_trajectory, sys::o3d_camera_trajectory_destroy
 }
 
 impl CameraTrajectory {
@@ -106,11 +95,6 @@ impl CameraTrajectory {
     pub fn new() -> Result<CameraTrajectory> {
         // SAFETY: out-pointer.
         new_trajectory(|out| unsafe { sys::o3d_camera_trajectory_create(out) })
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_camera_trajectory_t {
-        self.raw.as_ptr()
     }
 
     /// Number of poses.
@@ -153,13 +137,6 @@ impl CameraTrajectory {
     pub fn clear(&mut self) -> Result<()> {
         // SAFETY: valid handle, exclusively borrowed.
         check(unsafe { sys::o3d_camera_trajectory_clear(self.raw.as_ptr()) })
-    }
-}
-
-impl Drop for CameraTrajectory {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_camera_trajectory_destroy(self.raw.as_ptr()) }
     }
 }
 

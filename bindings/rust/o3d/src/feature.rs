@@ -8,6 +8,7 @@ use std::slice;
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
+use crate::array::Family;
 use crate::io::c_path;
 use crate::pointcloud::{PointCloud, SearchParam};
 use crate::util::{adopt, to_i32};
@@ -31,6 +32,27 @@ pub struct Feature {
 unsafe impl Send for Feature {}
 unsafe impl Sync for Feature {}
 
+impl crate::array::Arrays for Feature {
+    type Raw = sys::o3d_feature_t;
+    fn handle(&self) -> *const sys::o3d_feature_t {
+        self.raw.as_ptr()
+    }
+    fn handle_mut(&mut self) -> *mut sys::o3d_feature_t {
+        self.raw.as_ptr()
+    }
+}
+
+/// The descriptor matrix (`O3D_FEATURE_DATA`, num x dimension).
+const ARRAYS: Family<sys::o3d_feature_t, f64> = Family {
+    has: sys::o3d_feature_has_array,
+    shape: sys::o3d_feature_array_shape,
+    set: sys::o3d_feature_set_array,
+    get: sys::o3d_feature_get_array,
+    view: sys::o3d_feature_array_view,
+    view_mut: sys::o3d_feature_array_mutable_view,
+    set_f32: Some(sys::o3d_feature_set_array_f32),
+};
+
 impl Feature {
     /// Wrap a new handle and take its view.
     fn adopt(f: impl FnOnce(*mut *mut sys::o3d_feature_t) -> sys::o3d_status) -> Result<Feature> {
@@ -47,10 +69,10 @@ impl Feature {
         unsafe {
             check(sys::o3d_feature_dimension(&mut dimension, h))?;
             check(sys::o3d_feature_num(&mut num, h))?;
-            check(sys::o3d_feature_data(&mut data, h))?;
+            check(sys::o3d_feature_array_mutable_view(&mut data, &mut 0, h, sys::O3D_FEATURE_DATA))?;
         }
         if data.is_null() && dimension * num != 0 {
-            return Err(Error::new(ErrorCode::Internal, "o3d_feature_data returned NULL for a non-empty feature"));
+            return Err(Error::new(ErrorCode::Internal, "o3d_feature_array_mutable_view gave NULL for a non-empty feature"));
         }
         (self.dimension, self.num, self.data) = (dimension, num, data);
         Ok(())
@@ -144,11 +166,37 @@ impl Feature {
         (0..self.num).map(move |i| &self.data()[i * self.dimension..(i + 1) * self.dimension])
     }
 
-    /// Copy of the values (`o3d_feature_get_data`).
+    /// True when there are descriptors (of a nonzero dimension).
+    pub fn has_data(&self) -> Result<bool> {
+        ARRAYS.has(self, sys::O3D_FEATURE_DATA)
+    }
+
+    /// Replace the descriptors with `data` (whole descriptors of the current dimension; their count
+    /// may change). Views taken before are invalidated.
+    pub fn set_data(&mut self, data: &[f64]) -> Result<()> {
+        let status = ARRAYS.set_flat(self, sys::O3D_FEATURE_DATA, data);
+        let refreshed = self.refresh();
+        status.and(refreshed)
+    }
+
+    /// As [`Self::set_data`] from `D`-dimensional float32 descriptors (`D` must be the dimension).
+    pub fn set_descriptors_f32<const D: usize>(&mut self, rows: &[[f32; D]]) -> Result<()> {
+        let status = ARRAYS.set_f32(self, sys::O3D_FEATURE_DATA, rows);
+        let refreshed = self.refresh();
+        status.and(refreshed)
+    }
+
+    /// Zero-copy view of the `D`-dimensional descriptors, one row each (`D` must be the dimension).
+    pub fn descriptor_rows<const D: usize>(&self) -> Result<&[[f64; D]]> {
+        ARRAYS.view(self, sys::O3D_FEATURE_DATA)
+    }
+
+    /// Copy of the values (`o3d_feature_get_array`).
     pub fn to_vec(&self) -> Result<Vec<f64>> {
-        let mut out = vec![0.0; self.dimension * self.num];
-        // SAFETY: `out` has exactly the capacity passed.
-        check(unsafe { sys::o3d_feature_get_data(out.as_mut_ptr(), out.len(), self.as_raw()) })?;
+        let (mut out, mut rows) = (vec![0.0; self.dimension * self.num], 0);
+        // SAFETY: `out` has room for `num` rows of `dimension` values.
+        check(unsafe { sys::o3d_feature_get_array(out.as_mut_ptr(), self.num, &mut rows, self.as_raw(), sys::O3D_FEATURE_DATA) })?;
+        out.truncate(rows * self.dimension);
         Ok(out)
     }
 

@@ -1,14 +1,13 @@
 //! `Image` (o3d.geometry.Image): 1, 3 or 4 interleaved channels of `u8`, `u16` or `f32`, rows top
 //! to bottom.
 use std::fmt;
-use std::ptr::{self, NonNull};
 use std::slice;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
-use crate::pointcloud::copy_out;
-use crate::util::adopt;
+use crate::array::{impl_arrays, Family};
+use crate::util::handle;
 
 /// The pixel type of an image (`bytes_per_channel` 1, 2 or 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -87,19 +86,22 @@ impl ConvertType {
     }
 }
 
-/// A 2D image. Owns an `o3d_image_t`; `Send` and `Sync` under the same rule as [`crate::PointCloud`].
-pub struct Image {
-    raw: NonNull<sys::o3d_image_t>,
+handle! {
+    /// A 2D image. Owns an `o3d_image_t`; `Send` and `Sync` under the same rule as [`crate::PointCloud`].
+    Image(sys::o3d_image_t, "image"), new_image, sys::o3d_image_destroy, sys::o3d_image_clone
 }
+impl_arrays!(Image, sys::o3d_image_t);
 
-// SAFETY: `&self` methods make only `const` C calls; mutation takes `&mut self`.
-unsafe impl Send for Image {}
-unsafe impl Sync for Image {}
-
-/// Run a C function writing a new image, and own it.
-pub(crate) fn new_image(f: impl FnOnce(*mut *mut sys::o3d_image_t) -> sys::o3d_status) -> Result<Image> {
-    adopt("image", f, |raw| Image { raw })
-}
+/// The pixel bytes (`O3D_IMAGE_DATA`, one byte a row).
+const BYTES: Family<sys::o3d_image_t, u8> = Family {
+    has: sys::o3d_image_has_array,
+    shape: sys::o3d_image_array_shape,
+    set: sys::o3d_image_set_array,
+    get: sys::o3d_image_get_array,
+    view: sys::o3d_image_array_view,
+    view_mut: sys::o3d_image_array_mutable_view,
+    set_f32: None,
+};
 
 impl Image {
     /// A zero-filled `width` x `height` image of `channels` (1, 3 or 4) channels of `pixel`.
@@ -130,29 +132,10 @@ impl Image {
         Image::from_bytes(width, height, 1, PixelType::F32, bytes)
     }
 
-    /// Take ownership of a raw handle.
-    ///
-    /// # Safety
-    /// `raw` must be a valid image handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_image_t>) -> Image {
-        Image { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_image_t {
-        self.raw.as_ptr()
-    }
-
-    /// Deep copy.
-    pub fn try_clone(&self) -> Result<Image> {
-        // SAFETY: valid source handle.
-        new_image(|out| unsafe { sys::o3d_image_clone(out, self.as_raw()) })
-    }
-
-    fn int(&self, f: unsafe extern "C" fn(*const sys::o3d_image_t, *mut i32) -> sys::o3d_status) -> Result<i32> {
+    fn int(&self, f: unsafe extern "C" fn(*mut i32, *const sys::o3d_image_t) -> sys::o3d_status) -> Result<i32> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { f(self.as_raw(), &mut v) })?;
+        check(unsafe { f(&mut v, self.as_raw()) })?;
         Ok(v)
     }
 
@@ -183,32 +166,17 @@ impl Image {
 
     /// Zero-copy view of the pixel bytes, borrowed from the image.
     pub fn data(&self) -> Result<&[u8]> {
-        let (mut data, mut size) = (ptr::null(), 0);
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_image_array_view(&mut data, &mut size, self.as_raw(), O3D_IMAGE_DATA) })?;
-        if data.is_null() || size == 0 {
-            return Ok(&[]);
-        }
-        // SAFETY: `size` bytes valid until the next mutation, which needs `&mut self`.
-        Ok(unsafe { slice::from_raw_parts(data, size) })
+        BYTES.view(self, sys::O3D_IMAGE_DATA)
     }
 
     /// Writable zero-copy view of the pixel bytes.
     pub fn data_mut(&mut self) -> Result<&mut [u8]> {
-        let (mut data, mut size) = (ptr::null_mut(), 0);
-        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_image_array_mutable_view(&mut data, &mut size, self.raw.as_ptr(), O3D_IMAGE_DATA) })?;
-        if data.is_null() || size == 0 {
-            return Ok(&mut []);
-        }
-        // SAFETY: as `data`, unique for the life of the `&mut self` borrow.
-        Ok(unsafe { slice::from_raw_parts_mut(data, size) })
+        BYTES.view_mut(self, sys::O3D_IMAGE_DATA)
     }
 
-    /// Copy of the pixel bytes (`o3d_image_get_data`).
+    /// Copy of the pixel bytes (`o3d_image_get_array`).
     pub fn to_vec(&self) -> Result<Vec<u8>> {
-        // SAFETY: `out` has room for `cap` bytes or is NULL.
-        copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_image_get_array(out, cap, n, self.as_raw(), O3D_IMAGE_DATA) })
+        BYTES.to_vec(self, sys::O3D_IMAGE_DATA)
     }
 
     /// The values of a 1-channel `f32` image (copied; alignment of the bytes is not guaranteed).
@@ -286,20 +254,6 @@ impl Image {
     pub fn convert_depth_to_float(&self, depth_scale: f64, depth_trunc: f64) -> Result<Image> {
         // SAFETY: valid handle and out-pointer.
         new_image(|out| unsafe { sys::o3d_image_convert_depth_to_float(out, self.as_raw(), depth_scale, depth_trunc) })
-    }
-}
-
-impl Drop for Image {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_image_destroy(self.raw.as_ptr()) }
-    }
-}
-
-impl Clone for Image {
-    /// Deep copy. Panics if the library cannot copy; see [`Image::try_clone`].
-    fn clone(&self) -> Self {
-        self.try_clone().unwrap_or_else(|e| panic!("o3d_image_clone failed: {e}"))
     }
 }
 

@@ -127,7 +127,7 @@ impl Buffer {
     /// Copy of the bytes (`o3d_buffer_get_data`).
     pub fn to_vec(&self) -> Result<Vec<u8>> {
         // SAFETY: `out` has room for `cap` bytes or is NULL.
-        crate::pointcloud::copy_out::<u8>(|out, cap, n| unsafe {
+        crate::util::copy_out::<u8>(|out, cap, n| unsafe {
             sys::o3d_buffer_get_data(out, cap, n, self.raw.as_ptr())
         })
     }

@@ -9,6 +9,7 @@ use o3d_sys as sys;
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::feature::{rows_of, Feature};
 use crate::pointcloud::{PointCloud, SearchParam};
+use crate::util::copy_out;
 use crate::util::to_i32;
 
 /// A KD-tree over 3-D points, or over points of any dimension ([`KDTreeFlann::from_feature`],
@@ -84,16 +85,13 @@ impl SearchResultRef {
 
     /// Copy into an owned [`SearchResult`] (`o3d_search_result_get_*`).
     pub fn to_search_result(&self) -> Result<SearchResult> {
-        let (q, t) = self.counts()?;
-        let mut r = SearchResult { offsets: vec![0; q + 1], indices: vec![0; t], distances2: vec![0.0; t] };
         let raw = self.raw.as_ptr();
-        // SAFETY: each buffer has exactly the capacity passed.
-        unsafe {
-            check(sys::o3d_search_result_get_offsets(r.offsets.as_mut_ptr(), r.offsets.len(), raw))?;
-            check(sys::o3d_search_result_get_indices(r.indices.as_mut_ptr(), r.indices.len(), raw))?;
-            check(sys::o3d_search_result_get_distances2(r.distances2.as_mut_ptr(), r.distances2.len(), raw))?;
-        }
-        Ok(r)
+        // SAFETY: `out` has room for `cap` values, or is NULL for the count query.
+        Ok(SearchResult {
+            offsets: copy_out(|out, cap, n| unsafe { sys::o3d_search_result_get_offsets(out, cap, n, raw) })?,
+            indices: copy_out(|out, cap, n| unsafe { sys::o3d_search_result_get_indices(out, cap, n, raw) })?,
+            distances2: copy_out(|out, cap, n| unsafe { sys::o3d_search_result_get_distances2(out, cap, n, raw) })?,
+        })
     }
 }
 

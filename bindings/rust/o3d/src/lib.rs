@@ -35,6 +35,7 @@ use std::sync::{Arc, RwLock};
 
 pub use o3d_sys as sys;
 
+mod array;
 mod boundingbox;
 pub mod camera;
 mod error;
@@ -48,7 +49,6 @@ mod lineset;
 mod octree;
 mod panic;
 mod pointcloud;
-mod pointcloud_covariances;
 mod posegraph;
 mod progress;
 pub mod registration;

@@ -1,32 +1,45 @@
 //! `LineSet` (o3d.geometry.LineSet): points, lines between them and one color per line.
 use std::fmt;
-use std::ptr::{self, NonNull};
-use std::slice;
 
 use o3d_sys as sys;
 
+use crate::array::{impl_arrays, Family};
 use crate::boundingbox::OrientedBoundingBox;
 use crate::error::{check, Result};
-use crate::pointcloud::{copy_out, PointCloud};
+use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
-use crate::util::{adopt, mat4_ptr};
+use crate::util::{handle, mat4_ptr};
 
-/// Points (N x 3), lines (M pairs of point indices) and optional per-line colors (M x 3, RGB in
-/// `[0, 1]`). Line indices may hold any value; every operation that follows them checks them.
-///
-/// Owns an `o3d_lineset_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and every
-/// mutation takes `&mut self`, so borrowed views never outlive a mutation.
-pub struct LineSet {
-    raw: NonNull<sys::o3d_lineset_t>,
+handle! {
+    /// Points (N x 3), lines (M pairs of point indices) and optional per-line colors (M x 3, RGB in
+    /// `[0, 1]`). Line indices may hold any value; every operation that follows them checks them.
+    ///
+    /// Owns an `o3d_lineset_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and every
+    /// mutation takes `&mut self`, so borrowed views never outlive a mutation.
+    LineSet(sys::o3d_lineset_t, "line set"), new_lineset, sys::o3d_lineset_destroy, sys::o3d_lineset_clone
 }
+impl_arrays!(LineSet, sys::o3d_lineset_t);
 
-// SAFETY: see the type's documentation.
-unsafe impl Send for LineSet {}
-unsafe impl Sync for LineSet {}
-
-fn new_lineset(f: impl FnOnce(*mut *mut sys::o3d_lineset_t) -> sys::o3d_status) -> Result<LineSet> {
-    adopt("line set", f, |raw| LineSet { raw })
-}
+/// The float64 arrays (`O3D_LINESET_POINTS`, `O3D_LINESET_COLORS`).
+const ARRAYS: Family<sys::o3d_lineset_t, f64> = Family {
+    has: sys::o3d_lineset_has_array,
+    shape: sys::o3d_lineset_array_shape,
+    set: sys::o3d_lineset_set_array,
+    get: sys::o3d_lineset_get_array,
+    view: sys::o3d_lineset_array_view,
+    view_mut: sys::o3d_lineset_array_mutable_view,
+    set_f32: Some(sys::o3d_lineset_set_array_f32),
+};
+/// The int32 array (`O3D_LINESET_LINES`).
+const INDICES: Family<sys::o3d_lineset_t, i32> = Family {
+    has: sys::o3d_lineset_has_array,
+    shape: sys::o3d_lineset_array_shape,
+    set: sys::o3d_lineset_set_index_array,
+    get: sys::o3d_lineset_get_index_array,
+    view: sys::o3d_lineset_index_array_view,
+    view_mut: sys::o3d_lineset_index_array_mutable_view,
+    set_f32: None,
+};
 
 impl LineSet {
     /// A new empty line set.
@@ -41,29 +54,6 @@ impl LineSet {
         set.set_points(points)?;
         set.set_lines(lines)?;
         Ok(set)
-    }
-
-    /// Take ownership of a raw handle.
-    ///
-    /// # Safety
-    /// `raw` must be a valid line-set handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_lineset_t>) -> LineSet {
-        LineSet { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_lineset_t {
-        self.raw.as_ptr()
-    }
-
-    fn raw_mut(&mut self) -> *mut sys::o3d_lineset_t {
-        self.raw.as_ptr()
-    }
-
-    /// Deep copy.
-    pub fn try_clone(&self) -> Result<LineSet> {
-        // SAFETY: valid source handle.
-        new_lineset(|out| unsafe { sys::o3d_lineset_clone(out, self.as_raw()) })
     }
 
     /// Number of points.
@@ -82,81 +72,54 @@ impl LineSet {
         Ok(n)
     }
 
-    fn set_f64(&mut self, which: i32, rows: &[[f64; 3]]) -> Result<()> {
-        // SAFETY: rows.len() rows of 3 contiguous doubles; copied by the library.
-        check(unsafe { sys::o3d_lineset_set_array(self.raw_mut(), which, rows.as_ptr().cast(), rows.len()) })
-    }
-
-    fn view_f64(&self, which: i32) -> Result<&[[f64; 3]]> {
-        let (mut data, mut n) = (ptr::null(), 0);
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_lineset_array_view(&mut data, &mut n, self.as_raw(), which) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&[]);
-        }
-        // SAFETY: n rows of 3 doubles, valid until the next mutation, which needs `&mut self`.
-        Ok(unsafe { slice::from_raw_parts(data.cast::<[f64; 3]>(), n) })
-    }
-
-    fn get_f64(&self, which: i32) -> Result<Vec<[f64; 3]>> {
-        // SAFETY: `out` has room for `cap` rows of 3 doubles, or is NULL for the count query.
-        copy_out::<[f64; 3]>(|out, cap, n| unsafe {
-            sys::o3d_lineset_get_array(out.cast(), cap, n, self.as_raw(), which)
-        })
-    }
-
     /// Replace the points.
     pub fn set_points(&mut self, points: &[[f64; 3]]) -> Result<()> {
-        self.set_f64(sys::O3D_LINESET_POINTS, points)
+        ARRAYS.set(self, sys::O3D_LINESET_POINTS, points)
+    }
+
+    /// Replace the points from float32 input (converted in the single copy).
+    pub fn set_points_f32(&mut self, points: &[[f32; 3]]) -> Result<()> {
+        ARRAYS.set_f32(self, sys::O3D_LINESET_POINTS, points)
     }
 
     /// Replace the per-line colors.
     pub fn set_colors(&mut self, colors: &[[f64; 3]]) -> Result<()> {
-        self.set_f64(sys::O3D_LINESET_COLORS, colors)
+        ARRAYS.set(self, sys::O3D_LINESET_COLORS, colors)
     }
 
     /// Zero-copy view of the points.
     pub fn points(&self) -> Result<&[[f64; 3]]> {
-        self.view_f64(sys::O3D_LINESET_POINTS)
+        ARRAYS.view(self, sys::O3D_LINESET_POINTS)
     }
 
     /// Zero-copy view of the per-line colors (empty when absent).
     pub fn colors(&self) -> Result<&[[f64; 3]]> {
-        self.view_f64(sys::O3D_LINESET_COLORS)
+        ARRAYS.view(self, sys::O3D_LINESET_COLORS)
     }
 
     /// Copy of the points.
     pub fn points_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        self.get_f64(sys::O3D_LINESET_POINTS)
+        ARRAYS.to_vec(self, sys::O3D_LINESET_POINTS)
     }
 
     /// Copy of the per-line colors.
     pub fn colors_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        self.get_f64(sys::O3D_LINESET_COLORS)
+        ARRAYS.to_vec(self, sys::O3D_LINESET_COLORS)
     }
 
     /// Replace the lines (pairs of point indices).
     pub fn set_lines(&mut self, lines: &[[i32; 2]]) -> Result<()> {
-        // SAFETY: lines.len() rows of 2 contiguous ints; copied by the library.
-        check(unsafe { sys::o3d_lineset_set_index_array(self.raw_mut(), O3D_LINESET_LINES, lines.as_ptr().cast(), lines.len()) })
+        INDICES.set(self, sys::O3D_LINESET_LINES, lines)
     }
 
     /// Zero-copy view of the lines.
     pub fn lines(&self) -> Result<&[[i32; 2]]> {
-        let (mut data, mut n) = (ptr::null(), 0);
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_lineset_index_array_view(&mut data, &mut n, self.as_raw(), O3D_LINESET_LINES) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&[]);
-        }
-        // SAFETY: n rows of 2 ints, valid until the next mutation.
-        Ok(unsafe { slice::from_raw_parts(data.cast::<[i32; 2]>(), n) })
+        INDICES.view(self, sys::O3D_LINESET_LINES)
     }
 
     /// Copy of the lines.
     pub fn lines_to_vec(&self) -> Result<Vec<[i32; 2]>> {
-        // SAFETY: `out` has room for `cap` rows of 2 ints, or is NULL.
-        copy_out::<[i32; 2]>(|out, cap, n| unsafe { sys::o3d_lineset_get_index_array(out.cast(), cap, n, self.as_raw(), O3D_LINESET_LINES) })
+        INDICES.to_vec(self, sys::O3D_LINESET_LINES)
     }
 
     /// Set every line's color to `rgb`.
@@ -211,20 +174,6 @@ impl LineSet {
     pub fn create_from_triangle_mesh(mesh: &TriangleMesh) -> Result<LineSet> {
         // SAFETY: valid handle.
         new_lineset(|out| unsafe { sys::o3d_lineset_create_from_triangle_mesh(out, mesh.as_raw()) })
-    }
-}
-
-impl Drop for LineSet {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_lineset_destroy(self.raw.as_ptr()) }
-    }
-}
-
-impl Clone for LineSet {
-    /// Deep copy. Panics if the library cannot copy; see [`LineSet::try_clone`].
-    fn clone(&self) -> Self {
-        self.try_clone().unwrap_or_else(|e| panic!("o3d_lineset_clone failed: {e}"))
     }
 }
 

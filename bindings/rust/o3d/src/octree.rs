@@ -1,12 +1,12 @@
 //! `Octree` (o3d.geometry.Octree with point-and-color leaves) over a point cloud.
 use std::fmt;
-use std::ptr::{self, NonNull};
+use std::ptr;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Result};
 use crate::pointcloud::PointCloud;
-use crate::util::{adopt, to_i32};
+use crate::util::{handle, to_i32};
 
 /// Where a node sits (o3d.geometry.OctreeNodeInfo).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -39,37 +39,20 @@ pub struct OctreeLeaf {
     pub indices: Vec<i32>,
 }
 
-/// An octree: a cube of edge `size` at `origin`, split down to `max_depth`.
-///
-/// Owns an `o3d_octree_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and
-/// rebuilding takes `&mut self`.
-pub struct Octree {
-    raw: NonNull<sys::o3d_octree_t>,
+handle! {
+    /// An octree: a cube of edge `size` at `origin`, split down to `max_depth`.
+    ///
+    /// Owns an `o3d_octree_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and
+    /// rebuilding takes `&mut self`.
+    Octree(sys::o3d_octree_t, "octree"), new_octree, sys::o3d_octree_destroy
 }
-
-// SAFETY: see the type's documentation.
-unsafe impl Send for Octree {}
-unsafe impl Sync for Octree {}
 
 impl Octree {
     /// A new empty octree of depth `max_depth` (>= 1).
     pub fn new(max_depth: usize) -> Result<Octree> {
         let depth = to_i32(max_depth, "max_depth")?;
         // SAFETY: out-pointer.
-        adopt("octree", |out| unsafe { sys::o3d_octree_create(out, depth) }, |raw| Octree { raw })
-    }
-
-    /// Take ownership of a raw handle.
-    ///
-    /// # Safety
-    /// `raw` must be a valid octree handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_octree_t>) -> Octree {
-        Octree { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_octree_t {
-        self.raw.as_ptr()
+        new_octree(|out| unsafe { sys::o3d_octree_create(out, depth) })
     }
 
     /// Rebuild from `cloud`: the root is the cloud's bounding cube enlarged by `size_expand`
@@ -135,13 +118,6 @@ impl Octree {
         let (_, written) = locate(&mut indices, &mut info, &mut color)?;
         indices.truncate(written.min(n));
         Ok(Some(OctreeLeaf { info: OctreeNodeInfo::from_raw(info), color, indices }))
-    }
-}
-
-impl Drop for Octree {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_octree_destroy(self.raw.as_ptr()) }
     }
 }
 

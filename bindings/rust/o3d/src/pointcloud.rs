@@ -1,12 +1,12 @@
 //! `PointCloud` (o3d.geometry.PointCloud) and `SearchParam` (KDTreeSearchParam*).
 use std::fmt;
 use std::ptr::{self, NonNull};
-use std::slice;
 
 use o3d_sys as sys;
 
-use crate::error::{check, Error, ErrorCode, Result};
-use crate::util::init_struct;
+use crate::array::{impl_arrays, Family};
+use crate::error::{check, Result};
+use crate::util::{copy_out, handle, init_struct, opt_ptr, to_i32};
 
 /// Neighbourhood search parameter (Open3D `KDTreeSearchParamKNN` / `Radius` / `Hybrid`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,10 +42,7 @@ impl SearchParam {
     pub(crate) fn to_raw(self) -> Result<sys::o3d_search_param_t> {
         // SAFETY: o3d_search_param_t is plain numbers and nullable pointers; o3d_search_param_init is its init.
         let mut raw = unsafe { init_struct(|p, n| sys::o3d_search_param_init(p, n)) }?;
-        let count = |n: usize| {
-            i32::try_from(n)
-                .map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("neighbour count {n} is too large")))
-        };
+        let count = |n: usize| to_i32(n, "neighbour count");
         match self {
             SearchParam::Knn { knn } => {
                 raw.kind = sys::O3D_SEARCH_KNN;
@@ -65,64 +62,46 @@ impl SearchParam {
     }
 }
 
-/// A point cloud: points, and optionally one normal and one color (RGB in `[0, 1]`) per point.
-///
-/// Owns an `o3d_pointcloud_t`. `Send` and `Sync`: `&self` methods only read (the C API allows
-/// concurrent `const` calls), every mutation takes `&mut self`.
-pub struct PointCloud {
-    raw: NonNull<sys::o3d_pointcloud_t>,
+handle! {
+    /// A point cloud: points, and optionally one normal, one color (RGB in `[0, 1]`) and one
+    /// covariance (row-major 3x3) per point.
+    ///
+    /// Owns an `o3d_pointcloud_t`. `Send` and `Sync`: `&self` methods only read (the C API allows
+    /// concurrent `const` calls), every mutation takes `&mut self`.
+    PointCloud(sys::o3d_pointcloud_t, "cloud"), new_cloud, sys::o3d_pointcloud_destroy, sys::o3d_pointcloud_clone
 }
+impl_arrays!(PointCloud, sys::o3d_pointcloud_t);
 
-// SAFETY: the C API lets a handle be used from any thread, and concurrent calls on it are safe
-// when all take it `const`; `&self` methods only make `const` calls.
-unsafe impl Send for PointCloud {}
-unsafe impl Sync for PointCloud {}
+/// The cloud's float64 arrays (`O3D_POINTCLOUD_*`).
+const ARRAYS: Family<sys::o3d_pointcloud_t, f64> = Family {
+    has: sys::o3d_pointcloud_has_array,
+    shape: sys::o3d_pointcloud_array_shape,
+    set: sys::o3d_pointcloud_set_array,
+    get: sys::o3d_pointcloud_get_array,
+    view: sys::o3d_pointcloud_array_view,
+    view_mut: sys::o3d_pointcloud_array_mutable_view,
+    set_f32: Some(sys::o3d_pointcloud_set_array_f32),
+};
+const POINTS: i32 = sys::O3D_POINTCLOUD_POINTS;
+const NORMALS: i32 = sys::O3D_POINTCLOUD_NORMALS;
+const COLORS: i32 = sys::O3D_POINTCLOUD_COLORS;
+const COVARIANCES: i32 = sys::O3D_POINTCLOUD_COVARIANCES;
 
-type ViewFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut *const f64, *mut usize) -> sys::o3d_status;
-type MutViewFn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *mut *mut f64, *mut usize) -> sys::o3d_status;
-type GetFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64, usize, *mut usize) -> sys::o3d_status;
-type SetFn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *const f64, usize) -> sys::o3d_status;
-type SetF32Fn = unsafe extern "C" fn(*mut sys::o3d_pointcloud_t, *const f32, usize) -> sys::o3d_status;
-type FlagFn = unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut i32) -> sys::o3d_status;
-
-/// Run a C constructor writing `*out`, and wrap the handle.
-pub(crate) fn new_cloud(f: impl FnOnce(*mut *mut sys::o3d_pointcloud_t) -> sys::o3d_status) -> Result<PointCloud> {
-    let mut out = ptr::null_mut();
-    check(f(&mut out))?;
-    NonNull::new(out)
-        .map(|raw| PointCloud { raw })
-        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no cloud"))
-}
-
-/// Copy out a variable-length array with the query-then-copy convention (`out` NULL → count).
-pub(crate) fn copy_out<T: Copy + Default>(
-    mut f: impl FnMut(*mut T, usize, *mut usize) -> sys::o3d_status,
-) -> Result<Vec<T>> {
-    let mut n = 0usize;
-    check(f(ptr::null_mut(), 0, &mut n))?;
-    let mut out = vec![T::default(); n];
-    let mut written = 0usize;
-    check(f(out.as_mut_ptr(), n, &mut written))?;
-    out.truncate(written);
-    Ok(out)
-}
-
-fn flat<T>(rows: &[[T; 3]]) -> *const T {
-    rows.as_ptr().cast()
-}
-
-fn to_i32(n: usize, name: &str) -> Result<i32> {
-    i32::try_from(n).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("{name} {n} is too large")))
-}
-
-/// Wrap a cloud a successful C call wrote (none → Internal error).
+/// Own a cloud a successful C call wrote (none → Internal error).
 fn owned(raw: Option<NonNull<sys::o3d_pointcloud_t>>) -> Result<PointCloud> {
-    raw.map(|raw| PointCloud { raw })
-        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no cloud"))
+    // SAFETY: `out` is the constructor's out-pointer.
+    new_cloud(|out| unsafe {
+        *out = raw.map_or(ptr::null_mut(), NonNull::as_ptr);
+        sys::O3D_OK
+    })
 }
 
-fn opt_ptr(v: &Option<[f64; 3]>) -> *const f64 {
-    v.as_ref().map_or(ptr::null(), |a| a.as_ptr())
+/// A row-major 3x3 matrix.
+type Mat3 = [[f64; 3]; 3];
+
+/// The value of `r`, or a panic naming the C function that refused (the non-`try_` accessors).
+fn or_panic<T>(r: Result<T>, what: &str) -> T {
+    r.unwrap_or_else(|e| panic!("{what} failed: {e}"))
 }
 
 impl PointCloud {
@@ -139,29 +118,6 @@ impl PointCloud {
         Ok(pc)
     }
 
-    /// Take ownership of a raw handle (e.g. from `o3d-sys`).
-    ///
-    /// # Safety
-    /// `raw` must be a valid cloud handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_pointcloud_t>) -> PointCloud {
-        PointCloud { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_pointcloud_t {
-        self.raw.as_ptr()
-    }
-
-    pub(crate) fn raw_mut(&mut self) -> *mut sys::o3d_pointcloud_t {
-        self.raw.as_ptr()
-    }
-
-    /// Deep copy (`o3d_pointcloud_clone`); [`Clone::clone`] panics where this returns `Err`.
-    pub fn try_clone(&self) -> Result<PointCloud> {
-        // SAFETY: valid source handle.
-        new_cloud(|out| unsafe { sys::o3d_pointcloud_clone(out, self.as_raw()) })
-    }
-
     /// Number of points.
     pub fn try_len(&self) -> Result<usize> {
         let mut n = 0;
@@ -172,7 +128,7 @@ impl PointCloud {
 
     /// Number of points. Panics if the library refuses (it only does for a NULL handle).
     pub fn len(&self) -> usize {
-        self.try_len().unwrap_or_else(|e| panic!("o3d_pointcloud_size failed: {e}"))
+        or_panic(self.try_len(), "o3d_pointcloud_size")
     }
 
     /// True when the cloud has no points.
@@ -180,26 +136,24 @@ impl PointCloud {
         self.len() == 0
     }
 
-    fn flag(&self, f: FlagFn) -> Result<bool> {
-        let mut v = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { f(self.as_raw(), &mut v) })?;
-        Ok(v != 0)
-    }
-
     /// True if the cloud has points.
     pub fn has_points(&self) -> Result<bool> {
-        self.flag(sys::o3d_pointcloud_has_points)
+        ARRAYS.has(self, POINTS)
     }
 
     /// True if the cloud has one normal per point.
     pub fn has_normals(&self) -> Result<bool> {
-        self.flag(sys::o3d_pointcloud_has_normals)
+        ARRAYS.has(self, NORMALS)
     }
 
     /// True if the cloud has one color per point.
     pub fn has_colors(&self) -> Result<bool> {
-        self.flag(sys::o3d_pointcloud_has_colors)
+        ARRAYS.has(self, COLORS)
+    }
+
+    /// True when the cloud has one covariance per point.
+    pub fn has_covariances(&self) -> Result<bool> {
+        ARRAYS.has(self, COVARIANCES)
     }
 
     /// Remove points, normals and colors.
@@ -208,149 +162,133 @@ impl PointCloud {
         check(unsafe { sys::o3d_pointcloud_clear(self.raw_mut()) })
     }
 
-    fn set(&mut self, f: SetFn, rows: &[[f64; 3]]) -> Result<()> {
-        // SAFETY: rows.len() rows of 3 contiguous doubles; copied by the library.
-        check(unsafe { f(self.raw_mut(), flat(rows), rows.len()) })
-    }
-
-    fn set_f32(&mut self, f: SetF32Fn, rows: &[[f32; 3]]) -> Result<()> {
-        // SAFETY: rows.len() rows of 3 contiguous floats; copied by the library.
-        check(unsafe { f(self.raw_mut(), flat(rows), rows.len()) })
-    }
-
     /// Replace the points (copied once). Normals and colors are kept as they are.
     pub fn set_points(&mut self, points: &[[f64; 3]]) -> Result<()> {
-        self.set(sys::o3d_pointcloud_set_points, points)
+        ARRAYS.set(self, POINTS, points)
     }
 
     /// Replace the points from float32 input (converted in the single copy).
     pub fn set_points_f32(&mut self, points: &[[f32; 3]]) -> Result<()> {
-        self.set_f32(sys::o3d_pointcloud_set_points_f32, points)
+        ARRAYS.set_f32(self, POINTS, points)
     }
 
     /// Replace the normals.
     pub fn set_normals(&mut self, normals: &[[f64; 3]]) -> Result<()> {
-        self.set(sys::o3d_pointcloud_set_normals, normals)
+        ARRAYS.set(self, NORMALS, normals)
     }
 
     /// Replace the normals from float32 input.
     pub fn set_normals_f32(&mut self, normals: &[[f32; 3]]) -> Result<()> {
-        self.set_f32(sys::o3d_pointcloud_set_normals_f32, normals)
+        ARRAYS.set_f32(self, NORMALS, normals)
     }
 
     /// Replace the colors (RGB in `[0, 1]`).
     pub fn set_colors(&mut self, colors: &[[f64; 3]]) -> Result<()> {
-        self.set(sys::o3d_pointcloud_set_colors, colors)
+        ARRAYS.set(self, COLORS, colors)
     }
 
     /// Replace the colors from float32 input.
     pub fn set_colors_f32(&mut self, colors: &[[f32; 3]]) -> Result<()> {
-        self.set_f32(sys::o3d_pointcloud_set_colors_f32, colors)
+        ARRAYS.set_f32(self, COLORS, colors)
     }
 
-    fn view(&self, f: ViewFn) -> Result<&[[f64; 3]]> {
-        let mut data = ptr::null();
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { f(self.as_raw(), &mut data, &mut n) })?;
-        if n == 0 || data.is_null() {
-            return Ok(&[]);
-        }
-        // SAFETY: n rows of 3 doubles (align 8), valid until the next mutation of the cloud, which
-        // needs `&mut self` and so ends this borrow first.
-        Ok(unsafe { slice::from_raw_parts(data.cast::<[f64; 3]>(), n) })
-    }
-
-    fn view_mut(&mut self, f: MutViewFn) -> Result<&mut [[f64; 3]]> {
-        let mut data = ptr::null_mut();
-        let mut n = 0;
-        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { f(self.raw_mut(), &mut data, &mut n) })?;
-        if n == 0 || data.is_null() {
-            return Ok(&mut []);
-        }
-        // SAFETY: as `view`, and unique because `self` is borrowed mutably for the slice's life.
-        Ok(unsafe { slice::from_raw_parts_mut(data.cast::<[f64; 3]>(), n) })
+    /// Replace the covariances (copied once; each must be symmetric).
+    pub fn set_covariances(&mut self, covariances: &[Mat3]) -> Result<()> {
+        ARRAYS.set(self, COVARIANCES, covariances)
     }
 
     /// Zero-copy view of the points, borrowed from the cloud.
     pub fn try_points(&self) -> Result<&[[f64; 3]]> {
-        self.view(sys::o3d_pointcloud_points_view)
+        ARRAYS.view(self, POINTS)
     }
 
     /// Zero-copy view of the normals (empty when the cloud has none).
     pub fn try_normals(&self) -> Result<&[[f64; 3]]> {
-        self.view(sys::o3d_pointcloud_normals_view)
+        ARRAYS.view(self, NORMALS)
     }
 
     /// Zero-copy view of the colors (empty when the cloud has none).
     pub fn try_colors(&self) -> Result<&[[f64; 3]]> {
-        self.view(sys::o3d_pointcloud_colors_view)
+        ARRAYS.view(self, COLORS)
+    }
+
+    /// Zero-copy view of the covariances (empty when the cloud has none), borrowed from the cloud.
+    pub fn covariances(&self) -> Result<&[Mat3]> {
+        ARRAYS.view(self, COVARIANCES)
     }
 
     /// Zero-copy view of the points. Panics if the library refuses (see [`Self::try_points`]).
     pub fn points(&self) -> &[[f64; 3]] {
-        self.try_points().unwrap_or_else(|e| panic!("o3d_pointcloud_points_view failed: {e}"))
+        or_panic(self.try_points(), "o3d_pointcloud_array_view")
     }
 
     /// Zero-copy view of the normals. Panics if the library refuses.
     pub fn normals(&self) -> &[[f64; 3]] {
-        self.try_normals().unwrap_or_else(|e| panic!("o3d_pointcloud_normals_view failed: {e}"))
+        or_panic(self.try_normals(), "o3d_pointcloud_array_view")
     }
 
     /// Zero-copy view of the colors. Panics if the library refuses.
     pub fn colors(&self) -> &[[f64; 3]] {
-        self.try_colors().unwrap_or_else(|e| panic!("o3d_pointcloud_colors_view failed: {e}"))
+        or_panic(self.try_colors(), "o3d_pointcloud_array_view")
     }
 
     /// Writable zero-copy view of the points, for in-place edits.
     pub fn try_points_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        self.view_mut(sys::o3d_pointcloud_points_mutable_view)
+        ARRAYS.view_mut(self, POINTS)
     }
 
     /// Writable zero-copy view of the normals.
     pub fn try_normals_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        self.view_mut(sys::o3d_pointcloud_normals_mutable_view)
+        ARRAYS.view_mut(self, NORMALS)
     }
 
     /// Writable zero-copy view of the colors.
     pub fn try_colors_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        self.view_mut(sys::o3d_pointcloud_colors_mutable_view)
+        ARRAYS.view_mut(self, COLORS)
     }
 
     /// Writable zero-copy view of the points. Panics if the library refuses.
     pub fn points_mut(&mut self) -> &mut [[f64; 3]] {
-        self.try_points_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_points_mutable_view failed: {e}"))
+        or_panic(self.try_points_mut(), "o3d_pointcloud_array_mutable_view")
     }
 
     /// Writable zero-copy view of the normals. Panics if the library refuses.
     pub fn normals_mut(&mut self) -> &mut [[f64; 3]] {
-        self.try_normals_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_normals_mutable_view failed: {e}"))
+        or_panic(self.try_normals_mut(), "o3d_pointcloud_array_mutable_view")
     }
 
     /// Writable zero-copy view of the colors. Panics if the library refuses.
     pub fn colors_mut(&mut self) -> &mut [[f64; 3]] {
-        self.try_colors_mut().unwrap_or_else(|e| panic!("o3d_pointcloud_colors_mutable_view failed: {e}"))
+        or_panic(self.try_colors_mut(), "o3d_pointcloud_array_mutable_view")
     }
 
-    fn get(&self, f: GetFn) -> Result<Vec<[f64; 3]>> {
-        // SAFETY: `out` has room for `cap` rows of 3 doubles (or is NULL for the count query).
-        copy_out::<[f64; 3]>(|out, cap, n| unsafe { f(self.as_raw(), out.cast(), cap, n) })
-    }
-
-    /// Copy of the points (`o3d_pointcloud_get_points`).
+    /// Copy of the points (`o3d_pointcloud_get_array`).
     pub fn points_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        self.get(sys::o3d_pointcloud_get_points)
+        ARRAYS.to_vec(self, POINTS)
     }
 
     /// Copy of the normals.
     pub fn normals_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        self.get(sys::o3d_pointcloud_get_normals)
+        ARRAYS.to_vec(self, NORMALS)
     }
 
     /// Copy of the colors.
     pub fn colors_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        self.get(sys::o3d_pointcloud_get_colors)
+        ARRAYS.to_vec(self, COLORS)
+    }
+
+    /// Copy of the covariances.
+    pub fn covariances_to_vec(&self) -> Result<Vec<Mat3>> {
+        ARRAYS.to_vec(self, COVARIANCES)
+    }
+
+    /// Covariance of each point's neighbourhood (divided by the neighbour count; fewer than 3
+    /// neighbours give the identity, as Open3D). `SearchParam::default()` is Open3D's KNN 30.
+    pub fn estimate_covariances(&mut self, param: SearchParam) -> Result<&mut Self> {
+        let raw = param.to_raw()?;
+        // SAFETY: valid handle and parameter struct.
+        check(unsafe { sys::o3d_pointcloud_estimate_covariances(self.raw_mut(), &raw) })?;
+        Ok(self)
     }
 
     /// Concatenate `other` onto `self` (Open3D `pcd += other`).
@@ -387,13 +325,10 @@ impl PointCloud {
         Ok(self)
     }
 
-    fn vec3(
-        &self,
-        f: unsafe extern "C" fn(*const sys::o3d_pointcloud_t, *mut f64) -> sys::o3d_status,
-    ) -> Result<[f64; 3]> {
+    fn vec3(&self, f: unsafe extern "C" fn(*mut f64, *const sys::o3d_pointcloud_t) -> sys::o3d_status) -> Result<[f64; 3]> {
         let mut out = [0.0; 3];
         // SAFETY: room for 3 doubles.
-        check(unsafe { f(self.as_raw(), out.as_mut_ptr()) })?;
+        check(unsafe { f(out.as_mut_ptr(), self.as_raw()) })?;
         Ok(out)
     }
 
@@ -629,26 +564,13 @@ impl PointCloud {
     }
 }
 
-impl Drop for PointCloud {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_pointcloud_destroy(self.raw.as_ptr()) }
-    }
-}
-
-impl Clone for PointCloud {
-    /// Deep copy. Panics if the library cannot copy (out of memory); see [`PointCloud::try_clone`].
-    fn clone(&self) -> Self {
-        self.try_clone().unwrap_or_else(|e| panic!("o3d_pointcloud_clone failed: {e}"))
-    }
-}
-
 impl fmt::Debug for PointCloud {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("PointCloud")
             .field("points", &self.try_len().unwrap_or(0))
             .field("has_normals", &self.has_normals().unwrap_or(false))
             .field("has_colors", &self.has_colors().unwrap_or(false))
+            .field("has_covariances", &self.has_covariances().unwrap_or(false))
             .finish()
     }
 }

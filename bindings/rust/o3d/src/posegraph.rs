@@ -7,7 +7,6 @@ use std::fmt;
 use std::mem::size_of;
 use std::ops::ControlFlow;
 use std::path::Path;
-use std::ptr::NonNull;
 
 use o3d_sys as sys;
 
@@ -15,7 +14,7 @@ use crate::error::{check, Error, ErrorCode, Result};
 use crate::io::c_path;
 use crate::progress::with_progress;
 use crate::registration::IDENTITY;
-use crate::util::{adopt, init_struct, mat4_ptr, to_i32};
+use crate::util::{handle, init_struct, mat4_ptr, to_i32};
 
 /// The 6x6 identity.
 const IDENTITY6: [[f64; 6]; 6] = {
@@ -114,42 +113,19 @@ fn raw_edge() -> Result<sys::o3d_pose_graph_edge_t> {
     unsafe { init_struct(|p, n| sys::o3d_pose_graph_edge_init(p, n)) }
 }
 
-/// A pose graph: one pose per node (row-major 4x4, a rigid transform) and the edges between them.
-///
-/// Owns an `o3d_pose_graph_t`. `Send` and `Sync`: `&self` methods only read, every mutation
-/// (including [`global_optimization`]) takes `&mut self`.
-pub struct PoseGraph {
-    raw: NonNull<sys::o3d_pose_graph_t>,
+handle! {
+    /// A pose graph: one pose per node (row-major 4x4, a rigid transform) and the edges between them.
+    ///
+    /// Owns an `o3d_pose_graph_t`. `Send` and `Sync`: `&self` methods only read, every mutation
+    /// (including [`global_optimization`]) takes `&mut self`.
+    PoseGraph(sys::o3d_pose_graph_t, "pose graph"), new_pose_graph, sys::o3d_pose_graph_destroy, sys::o3d_pose_graph_clone
 }
-
-// SAFETY: the C API lets a handle be used from any thread; `&self` methods make only `const` calls.
-unsafe impl Send for PoseGraph {}
-unsafe impl Sync for PoseGraph {}
 
 impl PoseGraph {
     /// An empty graph.
     pub fn new() -> Result<PoseGraph> {
         // SAFETY: out-pointer provided by adopt.
-        adopt("pose graph", |out| unsafe { sys::o3d_pose_graph_create(out) }, |raw| PoseGraph { raw })
-    }
-
-    /// Take ownership of a raw handle (e.g. from `o3d-sys`).
-    ///
-    /// # Safety
-    /// `raw` must be a valid pose-graph handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_pose_graph_t>) -> PoseGraph {
-        PoseGraph { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_pose_graph_t {
-        self.raw.as_ptr()
-    }
-
-    /// Deep copy (`o3d_pose_graph_clone`); [`Clone::clone`] panics where this returns `Err`.
-    pub fn try_clone(&self) -> Result<PoseGraph> {
-        // SAFETY: valid source handle.
-        adopt("pose graph", |out| unsafe { sys::o3d_pose_graph_clone(out, self.as_raw()) }, |raw| PoseGraph { raw })
+        new_pose_graph(|out| unsafe { sys::o3d_pose_graph_create(out) })
     }
 
     /// Number of nodes.
@@ -230,20 +206,6 @@ impl PoseGraph {
     }
 }
 
-impl Drop for PoseGraph {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_pose_graph_destroy(self.raw.as_ptr()) }
-    }
-}
-
-impl Clone for PoseGraph {
-    /// Deep copy. Panics if the library cannot copy (out of memory); see [`PoseGraph::try_clone`].
-    fn clone(&self) -> Self {
-        self.try_clone().unwrap_or_else(|e| panic!("o3d_pose_graph_clone failed: {e}"))
-    }
-}
-
 impl fmt::Debug for PoseGraph {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("PoseGraph").field("num_nodes", &self.num_nodes()).field("num_edges", &self.num_edges()).finish()
@@ -254,7 +216,7 @@ impl fmt::Debug for PoseGraph {
 pub fn read_pose_graph(path: impl AsRef<Path>) -> Result<PoseGraph> {
     let path = c_path(path.as_ref())?;
     // SAFETY: NUL-terminated path.
-    adopt("pose graph", |out| unsafe { sys::o3d_io_read_pose_graph(out, path.as_ptr()) }, |raw| PoseGraph { raw })
+    new_pose_graph(|out| unsafe { sys::o3d_io_read_pose_graph(out, path.as_ptr()) })
 }
 
 /// Write `graph` in Open3D's JSON layout. @see o3d.io.write_pose_graph

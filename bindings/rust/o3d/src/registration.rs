@@ -8,9 +8,9 @@ use std::ptr::{self, NonNull};
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
-use crate::pointcloud::{copy_out, PointCloud};
+use crate::pointcloud::PointCloud;
+use crate::util::{copy_out, init_struct};
 use crate::progress::with_progress;
-use crate::util::init_struct;
 
 pub use crate::feature::{
     compute_fpfh_feature, compute_fpfh_feature_with, correspondences_from_features, Feature, MatchOptions,

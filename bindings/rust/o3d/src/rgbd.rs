@@ -1,7 +1,7 @@
 //! `RgbdImage` (o3d.geometry.RGBDImage) and the back-projection of depth / RGB-D images to point
 //! clouds (PointCloud.create_from_depth_image / create_from_rgbd_image).
 use std::fmt;
-use std::ptr::{self, NonNull};
+use std::ptr;
 
 use o3d_sys as sys;
 
@@ -9,7 +9,7 @@ use crate::camera::PinholeIntrinsic;
 use crate::error::Result;
 use crate::image::{new_image, Image};
 use crate::pointcloud::{new_cloud, PointCloud};
-use crate::util::{adopt, init_struct, mat4_ptr};
+use crate::util::{handle, init_struct, mat4_ptr};
 
 /// RGBDImage.create_from_color_and_depth keyword arguments (Open3D's defaults).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,17 +52,9 @@ pub enum RgbdFormat {
     Nyu,
 }
 
-/// A color (or intensity) image paired with a float depth image in metres.
-pub struct RgbdImage {
-    raw: NonNull<sys::o3d_rgbd_image_t>,
-}
-
-// SAFETY: immutable after creation; every accessor is a const call.
-unsafe impl Send for RgbdImage {}
-unsafe impl Sync for RgbdImage {}
-
-fn new_rgbd(f: impl FnOnce(*mut *mut sys::o3d_rgbd_image_t) -> sys::o3d_status) -> Result<RgbdImage> {
-    adopt("RGB-D image", f, |raw| RgbdImage { raw })
+handle! {
+    /// A color (or intensity) image paired with a float depth image in metres.
+    RgbdImage(sys::o3d_rgbd_image_t, "RGB-D image"), new_rgbd, sys::o3d_rgbd_image_destroy
 }
 
 impl RgbdImage {
@@ -100,11 +92,6 @@ impl RgbdImage {
         })
     }
 
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_rgbd_image_t {
-        self.raw.as_ptr()
-    }
-
     /// A copy of the color (or intensity) image.
     pub fn color(&self) -> Result<Image> {
         // SAFETY: valid handle.
@@ -115,13 +102,6 @@ impl RgbdImage {
     pub fn depth(&self) -> Result<Image> {
         // SAFETY: valid handle.
         new_image(|out| unsafe { sys::o3d_rgbd_image_get_depth(out, self.as_raw()) })
-    }
-}
-
-impl Drop for RgbdImage {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_rgbd_image_destroy(self.raw.as_ptr()) }
     }
 }
 

@@ -2,15 +2,13 @@
 //! Normals, clean-up, queries and processing are in `trianglemesh_ops.rs`, primitives in
 //! `trianglemesh_primitives.rs`.
 use std::fmt;
-use std::ptr::{self, NonNull};
-use std::slice;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Result};
 use crate::image::{new_image, Image};
-use crate::pointcloud::copy_out;
-use crate::util::adopt;
+use crate::array::{impl_arrays, Family};
+use crate::util::handle;
 
 /// The float64 arrays of a mesh with three values per row.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -36,23 +34,36 @@ impl MeshArray {
     }
 }
 
-/// A triangle mesh: vertices (with optional normals and colors), triangles (with optional normals,
-/// per-corner UVs and material ids) and texture images.
-///
-/// Owns an `o3d_trianglemesh_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and
-/// every mutation takes `&mut self`, so borrowed views can never outlive a mutation.
-pub struct TriangleMesh {
-    raw: NonNull<sys::o3d_trianglemesh_t>,
+handle! {
+    /// A triangle mesh: vertices (with optional normals and colors), triangles (with optional normals,
+    /// per-corner UVs and material ids) and texture images.
+    ///
+    /// Owns an `o3d_trianglemesh_t`. `Send` and `Sync`: `&self` methods only make `const` C calls and
+    /// every mutation takes `&mut self`, so borrowed views can never outlive a mutation.
+    TriangleMesh(sys::o3d_trianglemesh_t, "mesh"), new_mesh, sys::o3d_trianglemesh_destroy, sys::o3d_trianglemesh_clone
 }
+impl_arrays!(TriangleMesh, sys::o3d_trianglemesh_t);
 
-// SAFETY: see the type's documentation.
-unsafe impl Send for TriangleMesh {}
-unsafe impl Sync for TriangleMesh {}
-
-/// Run a C function writing a new mesh, and own it.
-pub(crate) fn new_mesh(f: impl FnOnce(*mut *mut sys::o3d_trianglemesh_t) -> sys::o3d_status) -> Result<TriangleMesh> {
-    adopt("mesh", f, |raw| TriangleMesh { raw })
-}
+/// The float64 arrays (`O3D_MESH_VERTICES` ... `O3D_MESH_TRIANGLE_UVS`).
+const ARRAYS: Family<sys::o3d_trianglemesh_t, f64> = Family {
+    has: sys::o3d_trianglemesh_has_array,
+    shape: sys::o3d_trianglemesh_array_shape,
+    set: sys::o3d_trianglemesh_set_array,
+    get: sys::o3d_trianglemesh_get_array,
+    view: sys::o3d_trianglemesh_array_view,
+    view_mut: sys::o3d_trianglemesh_array_mutable_view,
+    set_f32: Some(sys::o3d_trianglemesh_set_array_f32),
+};
+/// The int32 arrays (`O3D_MESH_TRIANGLES`, `O3D_MESH_TRIANGLE_MATERIAL_IDS`).
+const INDICES: Family<sys::o3d_trianglemesh_t, i32> = Family {
+    has: sys::o3d_trianglemesh_has_array,
+    shape: sys::o3d_trianglemesh_array_shape,
+    set: sys::o3d_trianglemesh_set_index_array,
+    get: sys::o3d_trianglemesh_get_index_array,
+    view: sys::o3d_trianglemesh_index_array_view,
+    view_mut: sys::o3d_trianglemesh_index_array_mutable_view,
+    set_f32: None,
+};
 
 impl TriangleMesh {
     /// A new empty mesh.
@@ -67,29 +78,6 @@ impl TriangleMesh {
         mesh.set_vertices(vertices)?;
         mesh.set_triangles(triangles)?;
         Ok(mesh)
-    }
-
-    /// Take ownership of a raw handle.
-    ///
-    /// # Safety
-    /// `raw` must be a valid mesh handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_trianglemesh_t>) -> TriangleMesh {
-        TriangleMesh { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_trianglemesh_t {
-        self.raw.as_ptr()
-    }
-
-    pub(crate) fn raw_mut(&mut self) -> *mut sys::o3d_trianglemesh_t {
-        self.raw.as_ptr()
-    }
-
-    /// Deep copy, textures included.
-    pub fn try_clone(&self) -> Result<TriangleMesh> {
-        // SAFETY: valid source handle.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_clone(out, self.as_raw()) })
     }
 
     /// Remove all arrays and textures.
@@ -115,10 +103,7 @@ impl TriangleMesh {
     }
 
     fn has(&self, which: i32) -> Result<bool> {
-        let mut v = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_has_array(&mut v, self.as_raw(), which) })?;
-        Ok(v != 0)
+        ARRAYS.has(self, which)
     }
 
     /// True if the array is present with the right row count (Open3D's `has_*`).
@@ -163,61 +148,29 @@ impl TriangleMesh {
 
     // ---- float64 arrays ----
 
-    fn set_f64<const N: usize>(&mut self, which: i32, rows: &[[f64; N]]) -> Result<()> {
-        // SAFETY: rows.len() rows of N contiguous doubles; copied by the library.
-        check(unsafe { sys::o3d_trianglemesh_set_array(self.raw_mut(), which, rows.as_ptr().cast(), rows.len()) })
-    }
-
-    fn view_f64<const N: usize>(&self, which: i32) -> Result<&[[f64; N]]> {
-        let (mut data, mut n) = (ptr::null(), 0);
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_array_view(&mut data, &mut n, self.as_raw(), which) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&[]);
-        }
-        // SAFETY: n rows of N doubles, valid until the next mutation, which needs `&mut self`.
-        Ok(unsafe { slice::from_raw_parts(data.cast::<[f64; N]>(), n) })
-    }
-
-    fn view_f64_mut<const N: usize>(&mut self, which: i32) -> Result<&mut [[f64; N]]> {
-        let (mut data, mut n) = (ptr::null_mut(), 0);
-        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_array_mutable_view(&mut data, &mut n, self.raw_mut(), which) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&mut []);
-        }
-        // SAFETY: as view_f64, unique for the life of the `&mut self` borrow.
-        Ok(unsafe { slice::from_raw_parts_mut(data.cast::<[f64; N]>(), n) })
-    }
-
-    fn get_f64<const N: usize>(&self, which: i32) -> Result<Vec<[f64; N]>>
-    where
-        [f64; N]: Default,
-    {
-        // SAFETY: `out` has room for `cap` rows of N doubles, or is NULL for the count query.
-        copy_out::<[f64; N]>(|out, cap, n| unsafe {
-            sys::o3d_trianglemesh_get_array(out.cast(), cap, n, self.as_raw(), which)
-        })
-    }
-
     /// Replace a three-column array (copied once).
     pub fn set_array(&mut self, which: MeshArray, rows: &[[f64; 3]]) -> Result<()> {
-        self.set_f64(which.raw(), rows)
+        ARRAYS.set(self, which.raw(), rows)
+    }
+
+    /// Replace a three-column array from float32 input (converted in the single copy).
+    pub fn set_array_f32(&mut self, which: MeshArray, rows: &[[f32; 3]]) -> Result<()> {
+        ARRAYS.set_f32(self, which.raw(), rows)
     }
 
     /// Zero-copy view of a three-column array (empty when absent).
     pub fn array(&self, which: MeshArray) -> Result<&[[f64; 3]]> {
-        self.view_f64(which.raw())
+        ARRAYS.view(self, which.raw())
     }
 
     /// Writable zero-copy view of a three-column array.
     pub fn array_mut(&mut self, which: MeshArray) -> Result<&mut [[f64; 3]]> {
-        self.view_f64_mut(which.raw())
+        ARRAYS.view_mut(self, which.raw())
     }
 
     /// Copy of a three-column array (`o3d_trianglemesh_get_array`).
     pub fn array_to_vec(&self, which: MeshArray) -> Result<Vec<[f64; 3]>> {
-        self.get_f64(which.raw())
+        ARRAYS.to_vec(self, which.raw())
     }
 
     /// Replace the vertices.
@@ -267,113 +220,64 @@ impl TriangleMesh {
 
     /// Replace the per-corner UVs (three rows per triangle).
     pub fn set_triangle_uvs(&mut self, uvs: &[[f64; 2]]) -> Result<()> {
-        self.set_f64(sys::O3D_MESH_TRIANGLE_UVS, uvs)
+        ARRAYS.set(self, sys::O3D_MESH_TRIANGLE_UVS, uvs)
     }
 
     /// Zero-copy view of the per-corner UVs.
     pub fn triangle_uvs(&self) -> Result<&[[f64; 2]]> {
-        self.view_f64(sys::O3D_MESH_TRIANGLE_UVS)
+        ARRAYS.view(self, sys::O3D_MESH_TRIANGLE_UVS)
     }
 
     /// Writable view of the per-corner UVs.
     pub fn triangle_uvs_mut(&mut self) -> Result<&mut [[f64; 2]]> {
-        self.view_f64_mut(sys::O3D_MESH_TRIANGLE_UVS)
+        ARRAYS.view_mut(self, sys::O3D_MESH_TRIANGLE_UVS)
     }
 
     /// Copy of the per-corner UVs.
     pub fn triangle_uvs_to_vec(&self) -> Result<Vec<[f64; 2]>> {
-        self.get_f64(sys::O3D_MESH_TRIANGLE_UVS)
+        ARRAYS.to_vec(self, sys::O3D_MESH_TRIANGLE_UVS)
     }
 
     // ---- int32 arrays ----
 
-    fn set_i32<const N: usize>(&mut self, which: i32, rows: &[[i32; N]]) -> Result<()> {
-        // SAFETY: rows.len() rows of N contiguous ints; copied by the library.
-        check(unsafe { sys::o3d_trianglemesh_set_index_array(self.raw_mut(), which, rows.as_ptr().cast(), rows.len()) })
-    }
-
-    fn view_i32<const N: usize>(&self, which: i32) -> Result<&[[i32; N]]> {
-        let (mut data, mut n) = (ptr::null(), 0);
-        // SAFETY: valid handle and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_index_array_view(&mut data, &mut n, self.as_raw(), which) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&[]);
-        }
-        // SAFETY: n rows of N ints, valid until the next mutation.
-        Ok(unsafe { slice::from_raw_parts(data.cast::<[i32; N]>(), n) })
-    }
-
-    fn view_i32_mut<const N: usize>(&mut self, which: i32) -> Result<&mut [[i32; N]]> {
-        let (mut data, mut n) = (ptr::null_mut(), 0);
-        // SAFETY: valid handle, exclusively borrowed, and out-pointers.
-        check(unsafe { sys::o3d_trianglemesh_index_array_mutable_view(&mut data, &mut n, self.raw_mut(), which) })?;
-        if data.is_null() || n == 0 {
-            return Ok(&mut []);
-        }
-        // SAFETY: as view_i32, unique for the `&mut self` borrow.
-        Ok(unsafe { slice::from_raw_parts_mut(data.cast::<[i32; N]>(), n) })
-    }
-
-    fn get_i32<const N: usize>(&self, which: i32) -> Result<Vec<[i32; N]>>
-    where
-        [i32; N]: Default,
-    {
-        // SAFETY: `out` has room for `cap` rows of N ints, or is NULL.
-        copy_out::<[i32; N]>(|out, cap, n| unsafe {
-            sys::o3d_trianglemesh_get_index_array(out.cast(), cap, n, self.as_raw(), which)
-        })
-    }
-
     /// Replace the triangles (vertex indices).
     pub fn set_triangles(&mut self, triangles: &[[i32; 3]]) -> Result<()> {
-        self.set_i32(sys::O3D_MESH_TRIANGLES, triangles)
+        INDICES.set(self, sys::O3D_MESH_TRIANGLES, triangles)
     }
 
     /// Zero-copy view of the triangles.
     pub fn triangles(&self) -> Result<&[[i32; 3]]> {
-        self.view_i32(sys::O3D_MESH_TRIANGLES)
+        INDICES.view(self, sys::O3D_MESH_TRIANGLES)
     }
 
     /// Writable view of the triangles (indices are re-checked by every operation).
     pub fn triangles_mut(&mut self) -> Result<&mut [[i32; 3]]> {
-        self.view_i32_mut(sys::O3D_MESH_TRIANGLES)
+        INDICES.view_mut(self, sys::O3D_MESH_TRIANGLES)
     }
 
     /// Copy of the triangles.
     pub fn triangles_to_vec(&self) -> Result<Vec<[i32; 3]>> {
-        self.get_i32(sys::O3D_MESH_TRIANGLES)
+        INDICES.to_vec(self, sys::O3D_MESH_TRIANGLES)
     }
 
     /// Replace the per-triangle material ids.
     pub fn set_triangle_material_ids(&mut self, ids: &[i32]) -> Result<()> {
-        // SAFETY: ids.len() ints; copied by the library.
-        check(unsafe {
-            sys::o3d_trianglemesh_set_index_array(
-                self.raw_mut(),
-                sys::O3D_MESH_TRIANGLE_MATERIAL_IDS,
-                ids.as_ptr(),
-                ids.len(),
-            )
-        })
+        INDICES.set(self, sys::O3D_MESH_TRIANGLE_MATERIAL_IDS, ids)
     }
 
     /// Zero-copy view of the per-triangle material ids.
     pub fn triangle_material_ids(&self) -> Result<&[i32]> {
-        let rows = self.view_i32::<1>(sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)?;
-        // SAFETY: [i32; 1] has the layout of i32 (as_flattened needs Rust 1.80).
-        Ok(unsafe { slice::from_raw_parts(rows.as_ptr().cast::<i32>(), rows.len()) })
+        INDICES.view(self, sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)
     }
 
     /// Writable view of the per-triangle material ids.
     pub fn triangle_material_ids_mut(&mut self) -> Result<&mut [i32]> {
-        let rows = self.view_i32_mut::<1>(sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)?;
-        // SAFETY: [i32; 1] has the layout of i32.
-        Ok(unsafe { slice::from_raw_parts_mut(rows.as_mut_ptr().cast::<i32>(), rows.len()) })
+        INDICES.view_mut(self, sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)
     }
 
     /// Copy of the per-triangle material ids.
     pub fn triangle_material_ids_to_vec(&self) -> Result<Vec<i32>> {
-        Ok(self.get_i32::<1>(sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)?.into_iter().map(|[id]| id).collect())
+        INDICES.to_vec(self, sys::O3D_MESH_TRIANGLE_MATERIAL_IDS)
     }
 
     // ---- textures ----
@@ -413,20 +317,6 @@ impl TriangleMesh {
     pub fn append(&mut self, other: &TriangleMesh) -> Result<()> {
         // SAFETY: two valid handles; `self` is exclusive so they differ.
         check(unsafe { sys::o3d_trianglemesh_append(self.raw_mut(), other.as_raw()) })
-    }
-}
-
-impl Drop for TriangleMesh {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_trianglemesh_destroy(self.raw.as_ptr()) }
-    }
-}
-
-impl Clone for TriangleMesh {
-    /// Deep copy. Panics if the library cannot copy; see [`TriangleMesh::try_clone`].
-    fn clone(&self) -> Self {
-        self.try_clone().unwrap_or_else(|e| panic!("o3d_trianglemesh_clone failed: {e}"))
     }
 }
 

@@ -53,8 +53,8 @@ pub struct TriangleClusters {
 }
 
 type InPlaceFn = unsafe extern "C" fn(*mut sys::o3d_trianglemesh_t) -> sys::o3d_status;
-type FlagFn = unsafe extern "C" fn(*const sys::o3d_trianglemesh_t, *mut i32) -> sys::o3d_status;
-type Vec3Fn = unsafe extern "C" fn(*const sys::o3d_trianglemesh_t, *mut f64) -> sys::o3d_status;
+type FlagFn = unsafe extern "C" fn(*mut i32, *const sys::o3d_trianglemesh_t) -> sys::o3d_status;
+type Vec3Fn = unsafe extern "C" fn(*mut f64, *const sys::o3d_trianglemesh_t) -> sys::o3d_status;
 
 impl TriangleMesh {
     fn in_place(&mut self, f: InPlaceFn) -> Result<&mut Self> {
@@ -66,14 +66,14 @@ impl TriangleMesh {
     fn flag(&self, f: FlagFn) -> Result<bool> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
-        check(unsafe { f(self.as_raw(), &mut v) })?;
+        check(unsafe { f(&mut v, self.as_raw()) })?;
         Ok(v != 0)
     }
 
     fn vec3(&self, f: Vec3Fn) -> Result<[f64; 3]> {
         let mut out = [0.0; 3];
         // SAFETY: room for 3 doubles.
-        check(unsafe { f(self.as_raw(), out.as_mut_ptr()) })?;
+        check(unsafe { f(out.as_mut_ptr(), self.as_raw()) })?;
         Ok(out)
     }
 

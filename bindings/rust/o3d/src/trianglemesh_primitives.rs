@@ -3,9 +3,19 @@ use o3d_sys as sys;
 
 use crate::error::Result;
 use crate::trianglemesh::{new_mesh, TriangleMesh};
-use crate::util::{opt_ptr, to_i32};
+use crate::util::{init_struct, opt_ptr, to_i32};
 
 impl TriangleMesh {
+    /// A twisted band about the z axis, a Moebius strip for odd `twists` (Open3D's `create_mobius`):
+    /// `edit` changes the library's defaults (`o3d_mobius_options_init`: 70 x 15 vertices, one twist).
+    pub fn create_mobius(edit: impl FnOnce(&mut sys::o3d_mobius_options_t)) -> Result<TriangleMesh> {
+        // SAFETY: plain numbers; o3d_mobius_options_init is its init.
+        let mut opts = unsafe { init_struct(|p, n| sys::o3d_mobius_options_init(p, n)) }?;
+        edit(&mut opts);
+        // SAFETY: a valid options struct (its struct_size checked by the library).
+        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_mobius(out, &opts) })
+    }
+
     /// Box `[0,width] x [0,height] x [0,depth]` (Open3D: 1, 1, 1).
     pub fn create_box(width: f64, height: f64, depth: f64) -> Result<TriangleMesh> {
         // SAFETY: out-pointer.

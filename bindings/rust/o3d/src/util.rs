@@ -46,3 +46,82 @@ pub(crate) fn opt_ptr<const N: usize>(v: &Option<[f64; N]>) -> *const f64 {
 pub(crate) fn mat4_ptr(m: &[[f64; 4]; 4]) -> *const f64 {
     m.as_ptr().cast()
 }
+
+/// Copy out a variable-length array with the query-then-copy convention (`out` NULL → count).
+pub(crate) fn copy_out<T: Copy + Default>(
+    mut f: impl FnMut(*mut T, usize, *mut usize) -> sys::o3d_status,
+) -> Result<Vec<T>> {
+    let mut n = 0usize;
+    check(f(ptr::null_mut(), 0, &mut n))?;
+    let mut out = vec![T::default(); n];
+    let mut written = 0usize;
+    check(f(out.as_mut_ptr(), n, &mut written))?;
+    out.truncate(written);
+    Ok(out)
+}
+
+/// An owned C handle type: the struct, `Send` + `Sync` (the C rule: concurrent calls on one handle
+/// are safe when all take it `const`; `&self` methods make only `const` calls and every mutation
+/// takes `&mut self`), `from_raw` / `as_raw` / `raw_mut`, `Drop`, a crate-private constructor
+/// adopting what a C function writes and, given the C clone function, `try_clone` and `Clone`.
+macro_rules! handle {
+    ($(#[$doc:meta])* $name:ident($raw:ty, $what:literal), $adopt:ident, $destroy:path $(, $clone:path)?) => {
+        $(#[$doc])*
+        pub struct $name {
+            raw: std::ptr::NonNull<$raw>,
+        }
+
+        // SAFETY: see the type's documentation.
+        unsafe impl Send for $name {}
+        unsafe impl Sync for $name {}
+
+        /// Run a C function writing a new handle, and own it.
+        pub(crate) fn $adopt(f: impl FnOnce(*mut *mut $raw) -> o3d_sys::o3d_status) -> crate::Result<$name> {
+            crate::util::adopt($what, f, |raw| $name { raw })
+        }
+
+        impl $name {
+            /// Take ownership of a raw handle (e.g. from `o3d-sys`).
+            ///
+            /// # Safety
+            /// `raw` must be a valid handle of this type owned by the caller; it is destroyed on drop.
+            pub unsafe fn from_raw(raw: std::ptr::NonNull<$raw>) -> $name {
+                $name { raw }
+            }
+
+            /// The raw handle, still owned by `self`.
+            pub fn as_raw(&self) -> *const $raw {
+                self.raw.as_ptr()
+            }
+
+            #[allow(dead_code)]
+            pub(crate) fn raw_mut(&mut self) -> *mut $raw {
+                self.raw.as_ptr()
+            }
+        }
+
+        impl Drop for $name {
+            fn drop(&mut self) {
+                // SAFETY: owned handle, destroyed once.
+                unsafe { $destroy(self.raw.as_ptr()) }
+            }
+        }
+        $(
+            impl $name {
+                /// Deep copy; [`Clone::clone`] panics where this returns `Err`.
+                pub fn try_clone(&self) -> crate::Result<$name> {
+                    // SAFETY: valid source handle.
+                    $adopt(|out| unsafe { $clone(out, self.as_raw()) })
+                }
+            }
+
+            impl Clone for $name {
+                /// Deep copy. Panics if the library cannot copy (out of memory); see `try_clone`.
+                fn clone(&self) -> Self {
+                    self.try_clone().unwrap_or_else(|e| panic!("{} failed: {e}", stringify!($clone)))
+                }
+            }
+        )?
+    };
+}
+pub(crate) use handle;

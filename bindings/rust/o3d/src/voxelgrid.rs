@@ -1,13 +1,13 @@
 //! `VoxelGrid` (o3d.geometry.VoxelGrid): the occupied cells of a regular grid, each with a color.
 use std::fmt;
-use std::ptr::{self, NonNull};
 
 use o3d_sys as sys;
 
-use crate::error::{check, Result};
+use crate::array::{cols, has};
+use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
-use crate::util::adopt;
+use crate::util::{copy_out, handle};
 
 /// One occupied cell (o3d.geometry.Voxel).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -18,19 +18,11 @@ pub struct Voxel {
     pub color: [f64; 3],
 }
 
-/// A sparse voxel grid of cubes of edge `voxel_size` starting at `origin`.
-///
-/// Owns an `o3d_voxelgrid_t`; immutable once built, so `Send` and `Sync`.
-pub struct VoxelGrid {
-    raw: NonNull<sys::o3d_voxelgrid_t>,
-}
-
-// SAFETY: every method calls only `const` C functions, which may run concurrently on one handle.
-unsafe impl Send for VoxelGrid {}
-unsafe impl Sync for VoxelGrid {}
-
-fn new_grid(f: impl FnOnce(*mut *mut sys::o3d_voxelgrid_t) -> sys::o3d_status) -> Result<VoxelGrid> {
-    adopt("voxel grid", f, |raw| VoxelGrid { raw })
+handle! {
+    /// A sparse voxel grid of cubes of edge `voxel_size` starting at `origin`.
+    ///
+    /// Owns an `o3d_voxelgrid_t`; immutable once built, so `Send` and `Sync`.
+    VoxelGrid(sys::o3d_voxelgrid_t, "voxel grid"), new_grid, sys::o3d_voxelgrid_destroy
 }
 
 impl VoxelGrid {
@@ -66,19 +58,6 @@ impl VoxelGrid {
         new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_triangle_mesh(out, mesh.as_raw(), voxel_size) })
     }
 
-    /// Take ownership of a raw handle.
-    ///
-    /// # Safety
-    /// `raw` must be a valid voxel-grid handle owned by the caller; it is destroyed on drop.
-    pub unsafe fn from_raw(raw: NonNull<sys::o3d_voxelgrid_t>) -> VoxelGrid {
-        VoxelGrid { raw }
-    }
-
-    /// The raw handle, still owned by `self`.
-    pub fn as_raw(&self) -> *const sys::o3d_voxelgrid_t {
-        self.raw.as_ptr()
-    }
-
     /// Edge length of a cell.
     pub fn voxel_size(&self) -> Result<f64> {
         let mut v = 0.0;
@@ -103,20 +82,27 @@ impl VoxelGrid {
         Ok(n)
     }
 
+    /// True when the cells carry colors (the grid was made from a colored cloud or mesh).
+    pub fn has_colors(&self) -> Result<bool> {
+        has(sys::o3d_voxelgrid_has_array, self.as_raw(), sys::O3D_VOXELGRID_COLORS)
+    }
+
     /// The occupied cells, sorted by grid index (x, then y, then z).
     pub fn get_voxels(&self) -> Result<Vec<Voxel>> {
-        let mut n = 0usize;
-        // SAFETY: NULL outputs with capacity 0 only report the count.
-        check(unsafe { sys::o3d_voxelgrid_get_voxels(ptr::null_mut(), ptr::null_mut(), 0, &mut n, self.as_raw()) })?;
-        let mut index = vec![[0i32; 3]; n];
-        let mut color = vec![[0.0f64; 3]; n];
-        let mut written = 0usize;
-        // SAFETY: room for n rows of 3 ints and n rows of 3 doubles.
-        check(unsafe {
-            sys::o3d_voxelgrid_get_voxels(index.as_mut_ptr().cast(), color.as_mut_ptr().cast(), n, &mut written,
-                self.as_raw(), )
+        for which in [sys::O3D_VOXELGRID_GRID_INDEX, sys::O3D_VOXELGRID_COLORS] {
+            if cols(sys::o3d_voxelgrid_array_shape, self.as_raw(), which)? != 3 {
+                return Err(Error::new(ErrorCode::Internal, format!("voxel grid array {which} is not 3 wide")));
+            }
+        }
+        // SAFETY: `out` has room for `cap` rows of 3 values, or is NULL for the count query.
+        let index = copy_out::<[i32; 3]>(|out, cap, n| unsafe {
+            sys::o3d_voxelgrid_get_index_array(out.cast(), cap, n, self.as_raw(), sys::O3D_VOXELGRID_GRID_INDEX)
         })?;
-        Ok(index.into_iter().zip(color).take(written).map(|(grid_index, color)| Voxel { grid_index, color }).collect())
+        // SAFETY: as above.
+        let color = copy_out::<[f64; 3]>(|out, cap, n| unsafe {
+            sys::o3d_voxelgrid_get_array(out.cast(), cap, n, self.as_raw(), sys::O3D_VOXELGRID_COLORS)
+        })?;
+        Ok(index.into_iter().zip(color).map(|(grid_index, color)| Voxel { grid_index, color }).collect())
     }
 
     /// Grid index of the cell containing `point` (occupied or not).
@@ -129,20 +115,14 @@ impl VoxelGrid {
 
     /// For each query point, whether its cell is occupied.
     pub fn check_if_included(&self, queries: &[[f64; 3]]) -> Result<Vec<bool>> {
-        let mut out = vec![0i32; queries.len()];
-        // SAFETY: queries.len() rows of 3 doubles; one int out per query.
+        let (mut out, mut n) = (vec![0i32; queries.len()], 0);
+        // SAFETY: queries.len() rows of 3 doubles; room for one int per query.
         check(unsafe {
-            sys::o3d_voxelgrid_check_if_included(out.as_mut_ptr(), self.as_raw(), queries.as_ptr().cast(),
-                queries.len(), )
+            sys::o3d_voxelgrid_check_if_included(out.as_mut_ptr(), out.len(), &mut n, self.as_raw(),
+                queries.as_ptr().cast(), queries.len())
         })?;
+        out.truncate(n);
         Ok(out.into_iter().map(|v| v != 0).collect())
-    }
-}
-
-impl Drop for VoxelGrid {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_voxelgrid_destroy(self.raw.as_ptr()) }
     }
 }
 

@@ -274,3 +274,18 @@ fn kdtree_over_a_feature_and_over_xd_points() {
     assert_eq!(KDTreeFlann::from_points_xd(&flat, 4).unwrap_err().code, ErrorCode::InvalidArgument);
     assert_eq!(KDTreeFlann::from_points_xd(&[f64::NAN, 0.0], 2).unwrap_err().code, ErrorCode::InvalidArgument);
 }
+
+#[test]
+fn data_through_the_array_family() {
+    let mut f = Feature::new(2, 1).unwrap();
+    assert!(f.has_data().unwrap());
+    f.set_data(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).unwrap();
+    assert_eq!((f.dimension(), f.num()), (2, 3));
+    assert_eq!(f.data(), &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+    assert_eq!(f.descriptor_rows::<2>().unwrap(), &[[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]);
+    assert_eq!(f.descriptor_rows::<3>().unwrap_err().code, ErrorCode::InvalidArgument);
+    assert_eq!(f.set_data(&[1.0, 2.0, 3.0]).unwrap_err().code, ErrorCode::InvalidArgument);
+    f.set_descriptors_f32(&[[0.5f32, 0.25]]).unwrap();
+    assert_eq!(f.data(), &[0.5, 0.25]);
+    assert_eq!(f.set_descriptors_f32(&[[0.5f32; 3]]).unwrap_err().code, ErrorCode::InvalidArgument);
+}

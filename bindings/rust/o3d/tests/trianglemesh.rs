@@ -368,3 +368,18 @@ fn knot_from_the_shared_data() {
     let pcd = mesh.sample_points_uniformly(1000, false, 0).unwrap();
     assert_eq!(pcd.len(), 1000);
 }
+
+#[test]
+fn mobius_float32_input_and_row_checks() {
+    let strip = TriangleMesh::create_mobius(|_| {}).unwrap();
+    assert!(strip.num_triangles().unwrap() > 0 && strip.num_vertices().unwrap() > 0);
+    let band = TriangleMesh::create_mobius(|o| (o.length_split, o.width_split) = (10, 3)).unwrap();
+    assert!(band.num_vertices().unwrap() < strip.num_vertices().unwrap());
+    assert_eq!(TriangleMesh::create_mobius(|o| o.radius = -1.0).unwrap_err().code, ErrorCode::InvalidArgument);
+
+    let mut mesh = TriangleMesh::new().unwrap();
+    mesh.set_array_f32(MeshArray::Vertices, &[[0.5f32, 1.0, 2.0]]).unwrap();
+    assert_eq!(mesh.vertices().unwrap(), &[[0.5, 1.0, 2.0]]);
+    mesh.set_triangle_uvs(&[[0.0, 1.0]; 3]).unwrap();
+    assert_eq!(mesh.triangle_uvs().unwrap().len(), 3);
+}

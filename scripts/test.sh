@@ -41,6 +41,9 @@ ctest_sanitized() {
     ctest --test-dir build-asan --output-on-failure -j"$JOBS" --timeout 900 -L 'capi|fuzz|core|cpp'
 }
 abi_check() { tools/abi_check.sh build; }
+# The C headers are the source the bindings are derived from: every function fully documented, and
+# the Doxygen reference builds without a warning.
+capi_docs() { python3 tools/check_capi_docs.py && tools/gen_capi_reference.sh build/capi-reference; }
 coverage_check() { python3 tools/check_binding_coverage.py --lib build/capi/libo3d.so; }
 python_tests() {
   [ -x .venv/bin/python ] || python3 -m venv .venv || return 1
@@ -75,6 +78,8 @@ step "ctest: core, C API, dlopen, C++ wrapper, headers, examples, C#, Java smoke
 step "build (ASan+UBSan)" build_sanitized
 step "ctest under ASan+UBSan" ctest_sanitized
 step "ABI check (abidiff against abi/)" abi_check
+step "C API docs and reference" capi_docs
+step "install + consumers outside the tree (CMake C/C++, pkg-config, dlopen)" scripts/check_consumers.sh build
 step "binding coverage" coverage_check
 step "python: pytest" python_tests
 step "python: examples" python_examples

@@ -34,7 +34,11 @@ pub(crate) trait Arrays {
 }
 
 /// True when array `which` of the handle `h` counts (Open3D's `has_*`).
-pub(crate) fn has<H>(f: unsafe extern "C" fn(*mut i32, *const H, i32) -> Status, h: *const H, which: i32) -> Result<bool> {
+pub(crate) fn has<H>(
+    f: unsafe extern "C" fn(*mut i32, *const H, i32) -> Status,
+    h: *const H,
+    which: i32,
+) -> Result<bool> {
     let mut v = 0;
     // SAFETY: valid handle (the caller's borrow) and out-pointer.
     check(unsafe { f(&mut v, h, which) })?;
@@ -42,7 +46,11 @@ pub(crate) fn has<H>(f: unsafe extern "C" fn(*mut i32, *const H, i32) -> Status,
 }
 
 /// Values per row of array `which`.
-pub(crate) fn cols<H>(f: unsafe extern "C" fn(*mut usize, *mut usize, *const H, i32) -> Status, h: *const H, which: i32) -> Result<usize> {
+pub(crate) fn cols<H>(
+    f: unsafe extern "C" fn(*mut usize, *mut usize, *const H, i32) -> Status,
+    h: *const H,
+    which: i32,
+) -> Result<usize> {
     let (mut rows, mut cols) = (0, 0);
     // SAFETY: valid handle and out-pointers.
     check(unsafe { f(&mut rows, &mut cols, h, which) })?;

@@ -95,8 +95,14 @@ impl OrientedBoundingBox {
         let mut n = 0usize;
         // SAFETY: points.len() rows of 3 doubles; `out` has room for one index per point.
         check(unsafe {
-            sys::o3d_obb_get_point_indices_within(out.as_mut_ptr(), out.len(), &mut n, &raw, points.as_ptr().cast(),
-                points.len(), )
+            sys::o3d_obb_get_point_indices_within(
+                out.as_mut_ptr(),
+                out.len(),
+                &mut n,
+                &raw,
+                points.as_ptr().cast(),
+                points.len(),
+            )
         })?;
         out.truncate(n.min(points.len()));
         Ok(out)

@@ -4,7 +4,7 @@ use std::fmt;
 use o3d_sys as sys;
 
 use crate::error::{check, Result};
-use crate::util::{handle, mat4_ptr};
+use crate::util::{c_enum, handle, mat4_ptr};
 
 /// o3d.camera.PinholeCameraIntrinsic: image size, focal lengths and principal point in pixels.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -23,15 +23,17 @@ pub struct PinholeIntrinsic {
     pub cy: f64,
 }
 
-/// Open3D's PinholeCameraIntrinsicParameters presets.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum IntrinsicPreset {
-    /// 640x480, f 525, c (319.5, 239.5).
-    PrimeSenseDefault,
-    /// Kinect v2 depth camera, 512x424.
-    Kinect2DepthDefault,
-    /// Kinect v2 color camera, 1920x1080.
-    Kinect2ColorDefault,
+c_enum! {
+    /// Open3D's PinholeCameraIntrinsicParameters presets (`O3D_INTRINSIC_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum IntrinsicPreset("intrinsic preset") {
+        /// 640x480, f 525, c (319.5, 239.5).
+        PrimeSenseDefault = sys::O3D_INTRINSIC_PRIMESENSE_DEFAULT,
+        /// Kinect v2 depth camera, 512x424.
+        Kinect2DepthDefault = sys::O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
+        /// Kinect v2 color camera, 1920x1080.
+        Kinect2ColorDefault = sys::O3D_INTRINSIC_KINECT2_COLOR_DEFAULT,
+    }
 }
 
 impl PinholeIntrinsic {
@@ -42,14 +44,9 @@ impl PinholeIntrinsic {
 
     /// One of Open3D's presets (`o3d_pinhole_intrinsic_set_preset`).
     pub fn preset(preset: IntrinsicPreset) -> Result<PinholeIntrinsic> {
-        let raw = match preset {
-            IntrinsicPreset::PrimeSenseDefault => sys::O3D_INTRINSIC_PRIMESENSE_DEFAULT,
-            IntrinsicPreset::Kinect2DepthDefault => sys::O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
-            IntrinsicPreset::Kinect2ColorDefault => sys::O3D_INTRINSIC_KINECT2_COLOR_DEFAULT,
-        };
         let mut out = sys::o3d_pinhole_intrinsic_t::default();
         // SAFETY: writable struct.
-        check(unsafe { sys::o3d_pinhole_intrinsic_set_preset(&mut out, raw) })?;
+        check(unsafe { sys::o3d_pinhole_intrinsic_set_preset(&mut out, preset.raw()) })?;
         Ok(PinholeIntrinsic::from_raw(out))
     }
 

@@ -7,8 +7,8 @@ use std::slice;
 
 use o3d_sys as sys;
 
-use crate::error::{check, Error, ErrorCode, Result};
 use crate::array::Family;
+use crate::error::{check, Error, ErrorCode, Result};
 use crate::io::c_path;
 use crate::pointcloud::{PointCloud, SearchParam};
 use crate::util::{adopt, to_i32};
@@ -72,7 +72,10 @@ impl Feature {
             check(sys::o3d_feature_array_mutable_view(&mut data, &mut 0, h, sys::O3D_FEATURE_DATA))?;
         }
         if data.is_null() && dimension * num != 0 {
-            return Err(Error::new(ErrorCode::Internal, "o3d_feature_array_mutable_view gave NULL for a non-empty feature"));
+            return Err(Error::new(
+                ErrorCode::Internal,
+                "o3d_feature_array_mutable_view gave NULL for a non-empty feature",
+            ));
         }
         (self.dimension, self.num, self.data) = (dimension, num, data);
         Ok(())
@@ -195,7 +198,9 @@ impl Feature {
     pub fn to_vec(&self) -> Result<Vec<f64>> {
         let (mut out, mut rows) = (vec![0.0; self.dimension * self.num], 0);
         // SAFETY: `out` has room for `num` rows of `dimension` values.
-        check(unsafe { sys::o3d_feature_get_array(out.as_mut_ptr(), self.num, &mut rows, self.as_raw(), sys::O3D_FEATURE_DATA) })?;
+        check(unsafe {
+            sys::o3d_feature_get_array(out.as_mut_ptr(), self.num, &mut rows, self.as_raw(), sys::O3D_FEATURE_DATA)
+        })?;
         out.truncate(rows * self.dimension);
         Ok(out)
     }
@@ -316,8 +321,16 @@ pub fn correspondences_from_features(
     let mut n = 0usize;
     // SAFETY: valid handles; `out` holds out.len() pairs of int32.
     check(unsafe {
-        sys::o3d_correspondences_from_features(out.as_mut_ptr().cast(), out.len(), &mut n, source.as_raw(),
-            target.as_raw(), options.mutual_filter as i32, options.mutual_consistency_ratio, threads, )
+        sys::o3d_correspondences_from_features(
+            out.as_mut_ptr().cast(),
+            out.len(),
+            &mut n,
+            source.as_raw(),
+            target.as_raw(),
+            options.mutual_filter as i32,
+            options.mutual_consistency_ratio,
+            threads,
+        )
     })?;
     if n > out.len() {
         return Err(Error::new(ErrorCode::Internal, format!("{n} correspondences for {} descriptors", out.len())));

@@ -44,8 +44,15 @@ impl PointCloud {
         mesh_and_indices(self.try_len()?, |out, idx, cap, n| {
             // SAFETY: valid handle; 3 doubles; `idx` has room for `cap` ints.
             unsafe {
-                sys::o3d_pointcloud_hidden_point_removal(out, idx, cap, n, self.as_raw(), camera_location.as_ptr(),
-                    radius, )
+                sys::o3d_pointcloud_hidden_point_removal(
+                    out,
+                    idx,
+                    cap,
+                    n,
+                    self.as_raw(),
+                    camera_location.as_ptr(),
+                    radius,
+                )
             }
         })
     }

@@ -5,9 +5,9 @@ use std::slice;
 
 use o3d_sys as sys;
 
-use crate::error::{check, Error, ErrorCode, Result};
 use crate::array::{impl_arrays, Family};
-use crate::util::handle;
+use crate::error::{check, Error, ErrorCode, Result};
+use crate::util::{c_enum, handle};
 
 /// The pixel type of an image (`bytes_per_channel` 1, 2 or 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -40,49 +40,32 @@ impl PixelType {
     }
 }
 
-/// The filters of [`Image::filter`] (`O3D_IMAGE_FILTER_*`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ImageFilter {
-    /// 3x3 Gaussian.
-    Gaussian3,
-    /// 5x5 Gaussian.
-    Gaussian5,
-    /// 7x7 Gaussian.
-    Gaussian7,
-    /// Horizontal Sobel derivative.
-    Sobel3Dx,
-    /// Vertical Sobel derivative.
-    Sobel3Dy,
-}
-
-impl ImageFilter {
-    fn raw(self) -> i32 {
-        match self {
-            ImageFilter::Gaussian3 => sys::O3D_IMAGE_FILTER_GAUSSIAN3,
-            ImageFilter::Gaussian5 => sys::O3D_IMAGE_FILTER_GAUSSIAN5,
-            ImageFilter::Gaussian7 => sys::O3D_IMAGE_FILTER_GAUSSIAN7,
-            ImageFilter::Sobel3Dx => sys::O3D_IMAGE_FILTER_SOBEL3_DX,
-            ImageFilter::Sobel3Dy => sys::O3D_IMAGE_FILTER_SOBEL3_DY,
-        }
+c_enum! {
+    /// The filters of [`Image::filter`] (`O3D_IMAGE_FILTER_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum ImageFilter("image filter") {
+        /// 3x3 Gaussian.
+        Gaussian3 = sys::O3D_IMAGE_FILTER_GAUSSIAN3,
+        /// 5x5 Gaussian.
+        Gaussian5 = sys::O3D_IMAGE_FILTER_GAUSSIAN5,
+        /// 7x7 Gaussian.
+        Gaussian7 = sys::O3D_IMAGE_FILTER_GAUSSIAN7,
+        /// Horizontal Sobel derivative.
+        Sobel3Dx = sys::O3D_IMAGE_FILTER_SOBEL3_DX,
+        /// Vertical Sobel derivative.
+        Sobel3Dy = sys::O3D_IMAGE_FILTER_SOBEL3_DY,
     }
 }
 
-/// How [`Image::create_float_image`] turns color into gray (`O3D_IMAGE_CONVERT_*`).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-pub enum ConvertType {
-    /// Mean of R, G and B.
-    Equal,
-    /// 0.299 R + 0.587 G + 0.114 B (Open3D's default).
-    #[default]
-    Weighted,
-}
-
-impl ConvertType {
-    fn raw(self) -> i32 {
-        match self {
-            ConvertType::Equal => sys::O3D_IMAGE_CONVERT_EQUAL,
-            ConvertType::Weighted => sys::O3D_IMAGE_CONVERT_WEIGHTED,
-        }
+c_enum! {
+    /// How [`Image::create_float_image`] turns color into gray (`O3D_IMAGE_CONVERT_*`).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+    pub enum ConvertType("convert type") {
+        /// Mean of R, G and B.
+        Equal = sys::O3D_IMAGE_CONVERT_EQUAL,
+        /// 0.299 R + 0.587 G + 0.114 B (Open3D's default).
+        #[default]
+        Weighted = sys::O3D_IMAGE_CONVERT_WEIGHTED,
     }
 }
 

@@ -7,54 +7,40 @@
 use std::ffi::CString;
 use std::fmt;
 use std::path::Path;
-use std::ptr::{self, NonNull};
+use std::ptr;
 use std::slice;
 
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::{new_cloud, PointCloud};
-use crate::util::init_struct;
+use crate::util::{copy_out, handle, options};
 
 pub use crate::feature::{read_feature, write_feature};
 pub use crate::io_geometry::*;
 pub use crate::posegraph::{read_pose_graph, write_pose_graph};
 
-/// Read options (o3d.io.read_point_cloud keyword arguments).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct ReadOptions {
-    /// Drop points with a NaN coordinate.
-    pub remove_nan_points: bool,
-    /// Drop points with an infinite coordinate.
-    pub remove_infinite_points: bool,
-}
-
-/// Write options (o3d.io.write_point_cloud keyword arguments).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct WriteOptions {
-    /// PLY/PCD: text instead of binary.
-    pub write_ascii: bool,
-    /// PCD: binary_compressed (LZF).
-    pub compressed: bool,
-}
-
-impl ReadOptions {
-    fn to_raw(self) -> Result<sys::o3d_read_options_t> {
-        // SAFETY: o3d_read_options_t is plain numbers and nullable pointers; o3d_read_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_read_options_init(p, n)) }?;
-        raw.remove_nan_points = self.remove_nan_points as i32;
-        raw.remove_infinite_points = self.remove_infinite_points as i32;
-        Ok(raw)
+options! {
+    /// Read options (o3d.io.read_point_cloud keyword arguments); `Default` is the library's
+    /// (`o3d_read_options_init`: nothing removed).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct ReadOptions(sys::o3d_read_options_t, sys::o3d_read_options_init) {
+        /// Drop points with a NaN coordinate.
+        pub remove_nan_points: bool = remove_nan_points,
+        /// Drop points with an infinite coordinate.
+        pub remove_infinite_points: bool = remove_infinite_points,
     }
 }
 
-impl WriteOptions {
-    fn to_raw(self) -> Result<sys::o3d_write_options_t> {
-        // SAFETY: o3d_write_options_t is plain numbers and nullable pointers; o3d_write_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_write_options_init(p, n)) }?;
-        raw.write_ascii = self.write_ascii as i32;
-        raw.compressed = self.compressed as i32;
-        Ok(raw)
+options! {
+    /// Write options (o3d.io.write_point_cloud keyword arguments); `Default` is the library's
+    /// (`o3d_write_options_init`: binary, uncompressed).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct WriteOptions(sys::o3d_write_options_t, sys::o3d_write_options_init) {
+        /// PLY/PCD: text instead of binary.
+        pub write_ascii: bool = write_ascii,
+        /// PCD: binary_compressed (LZF).
+        pub compressed: bool = compressed,
     }
 }
 
@@ -102,14 +88,11 @@ pub fn read_point_cloud_from_memory(data: &[u8], format: &str, options: &ReadOpt
     })
 }
 
-/// Bytes owned by the library (`o3d_buffer_t`), e.g. an encoded point cloud.
-pub struct Buffer {
-    raw: NonNull<sys::o3d_buffer_t>,
+handle! {
+    /// Bytes owned by the library (`o3d_buffer_t`), e.g. an encoded point cloud (immutable after
+    /// creation: `Send` and `Sync`).
+    Buffer(sys::o3d_buffer_t, "buffer"), new_buffer, sys::o3d_buffer_destroy
 }
-
-// SAFETY: immutable after creation; every accessor is a const call.
-unsafe impl Send for Buffer {}
-unsafe impl Sync for Buffer {}
 
 impl Buffer {
     /// Zero-copy view of the bytes.
@@ -127,16 +110,7 @@ impl Buffer {
     /// Copy of the bytes (`o3d_buffer_get_data`).
     pub fn to_vec(&self) -> Result<Vec<u8>> {
         // SAFETY: `out` has room for `cap` bytes or is NULL.
-        crate::util::copy_out::<u8>(|out, cap, n| unsafe {
-            sys::o3d_buffer_get_data(out, cap, n, self.raw.as_ptr())
-        })
-    }
-}
-
-impl Drop for Buffer {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_buffer_destroy(self.raw.as_ptr()) }
+        copy_out::<u8>(|out, cap, n| unsafe { sys::o3d_buffer_get_data(out, cap, n, self.raw.as_ptr()) })
     }
 }
 
@@ -152,11 +126,6 @@ pub fn write_point_cloud_to_buffer(cloud: &PointCloud, format: &str, options: &W
     let opts = options.to_raw()?;
     // SAFETY: valid handle, NUL-terminated format, valid options, out-pointer.
     new_buffer(|out| unsafe { sys::o3d_io_write_point_cloud_to_memory(out, cloud.as_raw(), format.as_ptr(), &opts) })
-}
-
-/// Run a C encoder writing a new buffer, and own it.
-pub(crate) fn new_buffer(f: impl FnOnce(*mut *mut sys::o3d_buffer_t) -> sys::o3d_status) -> Result<Buffer> {
-    crate::util::adopt("buffer", f, |raw| Buffer { raw })
 }
 
 /// Encode `cloud` in `format` (e.g. `"ply"`) into a byte vector.

@@ -8,61 +8,33 @@ use crate::error::{check, Result};
 use crate::image::{new_image, Image};
 use crate::io::{c_path, c_string, new_buffer, Buffer};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
-use crate::util::init_struct;
+use crate::util::options;
 
-/// o3d.io.read_triangle_mesh keyword arguments.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct MeshReadOptions {
-    /// Merge duplicated vertices and drop degenerate triangles after reading.
-    pub enable_post_processing: bool,
-}
-
-/// o3d.io.write_triangle_mesh keyword arguments (Open3D's defaults).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct MeshWriteOptions {
-    /// PLY/STL: text instead of binary (default false).
-    pub write_ascii: bool,
-    /// Accepted for Open3D compatibility; no format here compresses (default false).
-    pub compressed: bool,
-    /// Default true.
-    pub write_vertex_normals: bool,
-    /// Default true.
-    pub write_vertex_colors: bool,
-    /// Default true.
-    pub write_triangle_uvs: bool,
-}
-
-impl Default for MeshWriteOptions {
-    fn default() -> Self {
-        MeshWriteOptions {
-            write_ascii: false,
-            compressed: false,
-            write_vertex_normals: true,
-            write_vertex_colors: true,
-            write_triangle_uvs: true,
-        }
+options! {
+    /// o3d.io.read_triangle_mesh keyword arguments; `Default` is the library's
+    /// (`o3d_mesh_read_options_init`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MeshReadOptions(sys::o3d_mesh_read_options_t, sys::o3d_mesh_read_options_init) {
+        /// Merge duplicated vertices and drop degenerate triangles after reading (default false).
+        pub enable_post_processing: bool = enable_post_processing,
     }
 }
 
-impl MeshReadOptions {
-    fn to_raw(self) -> Result<sys::o3d_mesh_read_options_t> {
-        // SAFETY: o3d_mesh_read_options_t is plain numbers and nullable pointers; o3d_mesh_read_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_mesh_read_options_init(p, n)) }?;
-        raw.enable_post_processing = self.enable_post_processing as i32;
-        Ok(raw)
-    }
-}
-
-impl MeshWriteOptions {
-    fn to_raw(self) -> Result<sys::o3d_mesh_write_options_t> {
-        // SAFETY: o3d_mesh_write_options_t is plain numbers and nullable pointers; o3d_mesh_write_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_mesh_write_options_init(p, n)) }?;
-        raw.write_ascii = self.write_ascii as i32;
-        raw.compressed = self.compressed as i32;
-        raw.write_vertex_normals = self.write_vertex_normals as i32;
-        raw.write_vertex_colors = self.write_vertex_colors as i32;
-        raw.write_triangle_uvs = self.write_triangle_uvs as i32;
-        Ok(raw)
+options! {
+    /// o3d.io.write_triangle_mesh keyword arguments; `Default` is the library's
+    /// (`o3d_mesh_write_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct MeshWriteOptions(sys::o3d_mesh_write_options_t, sys::o3d_mesh_write_options_init) {
+        /// PLY/STL: text instead of binary (default false).
+        pub write_ascii: bool = write_ascii,
+        /// Accepted for Open3D compatibility; no format here compresses (default false).
+        pub compressed: bool = compressed,
+        /// Default true.
+        pub write_vertex_normals: bool = write_vertex_normals,
+        /// Default true.
+        pub write_vertex_colors: bool = write_vertex_colors,
+        /// Default true.
+        pub write_triangle_uvs: bool = write_triangle_uvs,
     }
 }
 

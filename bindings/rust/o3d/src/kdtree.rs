@@ -1,27 +1,22 @@
 //! `KDTreeFlann` (o3d.geometry.KDTreeFlann) with one-call batch searches, over 3-D points or over
 //! points of any dimension (features).
 use std::fmt;
-use std::ptr::{self, NonNull};
+use std::ptr;
 use std::slice;
 
 use o3d_sys as sys;
 
-use crate::error::{check, Error, ErrorCode, Result};
+use crate::error::{check, Result};
 use crate::feature::{rows_of, Feature};
 use crate::pointcloud::{PointCloud, SearchParam};
-use crate::util::copy_out;
-use crate::util::to_i32;
+use crate::util::{copy_out, handle, to_i32};
 
-/// A KD-tree over 3-D points, or over points of any dimension ([`KDTreeFlann::from_feature`],
-/// [`KDTreeFlann::from_points_xd`]). It copies the points, so it outlives what it was built from.
-/// `Send` and `Sync`: searches take the tree `const` and may run concurrently.
-pub struct KDTreeFlann {
-    raw: NonNull<sys::o3d_kdtree_t>,
+handle! {
+    /// A KD-tree over 3-D points, or over points of any dimension ([`KDTreeFlann::from_feature`],
+    /// [`KDTreeFlann::from_points_xd`]). It copies the points, so it outlives what it was built from.
+    /// `Send` and `Sync`: searches take the tree `const` and may run concurrently.
+    KDTreeFlann(sys::o3d_kdtree_t, "tree"), new_tree, sys::o3d_kdtree_destroy
 }
-
-// SAFETY: see the type docs and the C threading rule (searches are const calls).
-unsafe impl Send for KDTreeFlann {}
-unsafe impl Sync for KDTreeFlann {}
 
 /// Flat result of a batch search: the neighbours of query `i` are
 /// `indices[offsets[i]..offsets[i+1]]`, sorted by increasing distance, with squared distances in
@@ -49,14 +44,11 @@ impl SearchResult {
     }
 }
 
-/// A batch search result still owned by the library, read through zero-copy views.
-pub struct SearchResultRef {
-    raw: NonNull<sys::o3d_search_result_t>,
+handle! {
+    /// A batch search result still owned by the library, read through zero-copy views (immutable
+    /// after creation: `Send` and `Sync`).
+    SearchResultRef(sys::o3d_search_result_t, "search result"), new_result, sys::o3d_search_result_destroy
 }
-
-// SAFETY: immutable after creation; every accessor is a const call.
-unsafe impl Send for SearchResultRef {}
-unsafe impl Sync for SearchResultRef {}
 
 impl SearchResultRef {
     /// (number of queries, total number of neighbours).
@@ -95,52 +87,29 @@ impl SearchResultRef {
     }
 }
 
-impl Drop for SearchResultRef {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_search_result_destroy(self.raw.as_ptr()) }
-    }
-}
-
 impl fmt::Debug for SearchResultRef {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("SearchResultRef").field("counts", &self.counts().ok()).finish()
     }
 }
 
-fn wrap_tree(f: impl FnOnce(*mut *mut sys::o3d_kdtree_t) -> sys::o3d_status) -> Result<KDTreeFlann> {
-    let mut out = ptr::null_mut();
-    check(f(&mut out))?;
-    NonNull::new(out)
-        .map(|raw| KDTreeFlann { raw })
-        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no tree"))
-}
-
-fn wrap_result(f: impl FnOnce(*mut *mut sys::o3d_search_result_t) -> sys::o3d_status) -> Result<SearchResultRef> {
-    let mut out = ptr::null_mut();
-    check(f(&mut out))?;
-    NonNull::new(out)
-        .map(|raw| SearchResultRef { raw })
-        .ok_or_else(|| Error::new(ErrorCode::Internal, "the library reported success but returned no result"))
-}
-
 impl KDTreeFlann {
     /// Build a tree over the points of `cloud` (copied).
     pub fn new(cloud: &PointCloud) -> Result<KDTreeFlann> {
         // SAFETY: valid cloud handle.
-        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_pointcloud(out, cloud.as_raw()) })
+        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_pointcloud(out, cloud.as_raw()) })
     }
 
     /// Build a tree over `points` (copied). Non-finite coordinates → Err.
     pub fn from_points(points: &[[f64; 3]]) -> Result<KDTreeFlann> {
         // SAFETY: points.len() rows of 3 contiguous doubles.
-        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_points(out, points.as_ptr().cast(), points.len()) })
+        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_points(out, points.as_ptr().cast(), points.len()) })
     }
 
     /// Build a tree over the descriptors of `feature` (copied), of dimension `feature.dimension()`.
     pub fn from_feature(feature: &Feature) -> Result<KDTreeFlann> {
         // SAFETY: valid feature handle.
-        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_feature(out, feature.as_raw()) })
+        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_feature(out, feature.as_raw()) })
     }
 
     /// Build a tree over `data.len() / dimension` points of `dimension` values each, one after the
@@ -148,7 +117,7 @@ impl KDTreeFlann {
     pub fn from_points_xd(data: &[f64], dimension: usize) -> Result<KDTreeFlann> {
         let n = rows_of(data.len(), dimension)?;
         // SAFETY: data holds n * dimension doubles.
-        wrap_tree(|out| unsafe { sys::o3d_kdtree_create_from_points_xd(out, data.as_ptr(), dimension, n) })
+        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_points_xd(out, data.as_ptr(), dimension, n) })
     }
 
     /// Dimension of the indexed points (3 for trees over clouds).
@@ -173,7 +142,7 @@ impl KDTreeFlann {
         let p = param.to_raw()?;
         let threads = to_i32(num_threads, "num_threads")?;
         // SAFETY: queries holds n * dimension doubles; valid parameter struct.
-        wrap_result(|out| unsafe {
+        new_result(|out| unsafe {
             sys::o3d_kdtree_search_xd(out, self.raw.as_ptr(), queries.as_ptr(), n, dimension, &p, threads)
         })
     }
@@ -226,7 +195,7 @@ impl KDTreeFlann {
     pub fn search_ref(&self, queries: &[[f64; 3]], param: SearchParam) -> Result<SearchResultRef> {
         let p = param.to_raw()?;
         // SAFETY: queries.len() rows of 3 doubles; valid parameter struct.
-        wrap_result(|out| unsafe {
+        new_result(|out| unsafe {
             sys::o3d_kdtree_search(out, self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0)
         })
     }
@@ -235,7 +204,7 @@ impl KDTreeFlann {
     pub fn search_ref_f32(&self, queries: &[[f32; 3]], param: SearchParam) -> Result<SearchResultRef> {
         let p = param.to_raw()?;
         // SAFETY: queries.len() rows of 3 floats; valid parameter struct.
-        wrap_result(|out| unsafe {
+        new_result(|out| unsafe {
             sys::o3d_kdtree_search_f32(out, self.raw.as_ptr(), queries.as_ptr().cast(), queries.len(), &p, 0)
         })
     }
@@ -269,13 +238,6 @@ impl KDTreeFlann {
     /// At most `max_nn` nearest points within `radius` (Open3D `search_hybrid_vector_3d`).
     pub fn search_hybrid_vector_3d(&self, query: [f64; 3], radius: f64, max_nn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
         self.search_vector_3d(query, SearchParam::Hybrid { radius, max_nn })
-    }
-}
-
-impl Drop for KDTreeFlann {
-    fn drop(&mut self) {
-        // SAFETY: owned handle, destroyed once.
-        unsafe { sys::o3d_kdtree_destroy(self.raw.as_ptr()) }
     }
 }
 

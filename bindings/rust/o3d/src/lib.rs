@@ -77,6 +77,7 @@ pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClust
 pub use voxelgrid::{Voxel, VoxelGrid};
 
 use error::check;
+use util::c_enum;
 
 /// Library version string, e.g. `"0.1.0"`.
 pub fn version() -> &'static str {
@@ -90,40 +91,38 @@ pub fn version_numbers() -> (i32, i32, i32) {
     unsafe { (sys::o3d_version_major(), sys::o3d_version_minor(), sys::o3d_version_patch()) }
 }
 
-/// Log levels, most severe first (`O3D_LOG_*`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum LogLevel {
-    /// `O3D_LOG_ERROR`
-    Error = 0,
-    /// `O3D_LOG_WARNING`
-    Warning = 1,
-    /// `O3D_LOG_INFO`
-    Info = 2,
-    /// `O3D_LOG_DEBUG`
-    Debug = 3,
+c_enum! {
+    /// Log levels, most severe first (`O3D_LOG_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+    pub enum LogLevel("log level") {
+        /// `O3D_LOG_ERROR`
+        Error = sys::O3D_LOG_ERROR,
+        /// `O3D_LOG_WARNING`
+        Warning = sys::O3D_LOG_WARNING,
+        /// `O3D_LOG_INFO`
+        Info = sys::O3D_LOG_INFO,
+        /// `O3D_LOG_DEBUG`
+        Debug = sys::O3D_LOG_DEBUG,
+    }
 }
 
 impl LogLevel {
-    fn from_raw(level: i32) -> LogLevel {
-        match level {
-            sys::O3D_LOG_ERROR => LogLevel::Error,
-            sys::O3D_LOG_WARNING => LogLevel::Warning,
-            sys::O3D_LOG_INFO => LogLevel::Info,
-            _ => LogLevel::Debug,
-        }
+    /// A level from the library; anything past `O3D_LOG_DEBUG` reads as `Debug`.
+    fn from_level(level: i32) -> LogLevel {
+        LogLevel::from_raw(level).unwrap_or(LogLevel::Debug)
     }
 }
 
 /// Show messages at `level` and more severe (default [`LogLevel::Warning`]).
 pub fn set_verbosity_level(level: LogLevel) -> Result<()> {
     // SAFETY: plain value.
-    check(unsafe { sys::o3d_set_verbosity_level(level as i32) })
+    check(unsafe { sys::o3d_set_verbosity_level(level.raw()) })
 }
 
 /// The current verbosity level.
 pub fn get_verbosity_level() -> LogLevel {
     // SAFETY: no arguments.
-    LogLevel::from_raw(unsafe { sys::o3d_get_verbosity_level() })
+    LogLevel::from_level(unsafe { sys::o3d_get_verbosity_level() })
 }
 
 /// Default thread count for parallel algorithms (0 restores the OpenMP default, the core count).
@@ -160,7 +159,7 @@ unsafe extern "C" fn log_trampoline(level: i32, message: *const c_char, _user_da
     };
     // Log lines may come from worker threads and cannot report failure: a panicking log closure
     // is contained here and its payload dropped.
-    if catch_unwind(AssertUnwindSafe(|| callback(LogLevel::from_raw(level), &text))).is_err() {
+    if catch_unwind(AssertUnwindSafe(|| callback(LogLevel::from_level(level), &text))).is_err() {
         eprintln!("o3d: the log callback panicked; the panic was contained");
     }
 }

@@ -103,8 +103,16 @@ impl Octree {
             // SAFETY: 3 doubles in; writable struct and 3 doubles out; `out` has room for
             // indices.len() ints or is NULL.
             check(unsafe {
-                sys::o3d_octree_locate_leaf_node(&mut found, info, color.as_mut_ptr(), out, indices.len(), &mut n,
-                    self.as_raw(), point.as_ptr(), )
+                sys::o3d_octree_locate_leaf_node(
+                    &mut found,
+                    info,
+                    color.as_mut_ptr(),
+                    out,
+                    indices.len(),
+                    &mut n,
+                    self.as_raw(),
+                    point.as_ptr(),
+                )
             })?;
             Ok::<_, crate::Error>((found != 0, n))
         };

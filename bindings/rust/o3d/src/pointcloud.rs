@@ -5,7 +5,7 @@ use std::ptr::{self, NonNull};
 use o3d_sys as sys;
 
 use crate::array::{impl_arrays, Family};
-use crate::error::{check, Result};
+use crate::error::{check, Error, ErrorCode, Result};
 use crate::util::{copy_out, handle, init_struct, opt_ptr, to_i32};
 
 /// Neighbourhood search parameter (Open3D `KDTreeSearchParamKNN` / `Radius` / `Hybrid`).
@@ -31,17 +31,34 @@ pub enum SearchParam {
 }
 
 impl Default for SearchParam {
-    /// KNN with 30 neighbours, as Open3D's `KDTreeSearchParamKNN()`.
+    /// The library's default (`o3d_search_param_init`: KNN with 30 neighbours, Open3D's
+    /// `KDTreeSearchParamKNN()`); panics only if the library rejects its own struct.
     fn default() -> Self {
-        SearchParam::Knn { knn: 30 }
+        SearchParam::raw_default()
+            .and_then(SearchParam::from_raw)
+            .unwrap_or_else(|e| panic!("o3d_search_param_init failed: {e}"))
     }
 }
 
 impl SearchParam {
+    fn raw_default() -> Result<sys::o3d_search_param_t> {
+        // SAFETY: o3d_search_param_t is plain numbers; o3d_search_param_init is its init.
+        unsafe { init_struct(|p, n| sys::o3d_search_param_init(p, n)) }
+    }
+
+    fn from_raw(raw: sys::o3d_search_param_t) -> Result<SearchParam> {
+        let count = |n: i32| n.max(0) as usize;
+        Ok(match raw.kind {
+            sys::O3D_SEARCH_KNN => SearchParam::Knn { knn: count(raw.knn) },
+            sys::O3D_SEARCH_RADIUS => SearchParam::Radius { radius: raw.radius },
+            sys::O3D_SEARCH_HYBRID => SearchParam::Hybrid { radius: raw.radius, max_nn: count(raw.knn) },
+            other => return Err(Error::new(ErrorCode::Internal, format!("unknown search kind {other}"))),
+        })
+    }
+
     /// The C struct, started from `o3d_search_param_init` so `struct_size` is right.
     pub(crate) fn to_raw(self) -> Result<sys::o3d_search_param_t> {
-        // SAFETY: o3d_search_param_t is plain numbers and nullable pointers; o3d_search_param_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_search_param_init(p, n)) }?;
+        let mut raw = SearchParam::raw_default()?;
         let count = |n: usize| to_i32(n, "neighbour count");
         match self {
             SearchParam::Knn { knn } => {
@@ -104,6 +121,67 @@ fn or_panic<T>(r: Result<T>, what: &str) -> T {
     r.unwrap_or_else(|e| panic!("{what} failed: {e}"))
 }
 
+/// The accessors of one N x 3 float64 array of the cloud (`$which`, named `$what` in the docs).
+macro_rules! xyz_array {
+    ($which:expr, $what:literal, $has:ident, $set:ident, $set_f32:ident, $try_view:ident, $view:ident,
+     $try_view_mut:ident, $view_mut:ident, $to_vec:ident) => {
+        #[doc = concat!("True if the cloud has ", $what, " (one per point for normals and colors).")]
+        pub fn $has(&self) -> Result<bool> {
+            ARRAYS.has(self, $which)
+        }
+
+        #[doc = concat!("Replace the ", $what, " (copied once); the other arrays are kept as they are.")]
+        pub fn $set(&mut self, rows: &[[f64; 3]]) -> Result<()> {
+            ARRAYS.set(self, $which, rows)
+        }
+
+        #[doc = concat!("Replace the ", $what, " from float32 input (converted in the single copy).")]
+        pub fn $set_f32(&mut self, rows: &[[f32; 3]]) -> Result<()> {
+            ARRAYS.set_f32(self, $which, rows)
+        }
+
+        #[doc = concat!("Zero-copy view of the ", $what, ", borrowed from the cloud (empty when it has none).")]
+        pub fn $try_view(&self) -> Result<&[[f64; 3]]> {
+            ARRAYS.view(self, $which)
+        }
+
+        #[doc = concat!("Zero-copy view of the ", $what, ". Panics if the library refuses (see `", stringify!($try_view), "`).")]
+        pub fn $view(&self) -> &[[f64; 3]] {
+            or_panic(self.$try_view(), "o3d_pointcloud_array_view")
+        }
+
+        #[doc = concat!("Writable zero-copy view of the ", $what, ", for in-place edits.")]
+        pub fn $try_view_mut(&mut self) -> Result<&mut [[f64; 3]]> {
+            ARRAYS.view_mut(self, $which)
+        }
+
+        #[doc = concat!("Writable zero-copy view of the ", $what, ". Panics if the library refuses.")]
+        pub fn $view_mut(&mut self) -> &mut [[f64; 3]] {
+            or_panic(self.$try_view_mut(), "o3d_pointcloud_array_mutable_view")
+        }
+
+        #[doc = concat!("Copy of the ", $what, " (`o3d_pointcloud_get_array`).")]
+        pub fn $to_vec(&self) -> Result<Vec<[f64; 3]>> {
+            ARRAYS.to_vec(self, $which)
+        }
+    };
+}
+
+impl PointCloud {
+    xyz_array! {
+        POINTS, "points",
+        has_points, set_points, set_points_f32, try_points, points, try_points_mut, points_mut, points_to_vec
+    }
+    xyz_array! {
+        NORMALS, "normals",
+        has_normals, set_normals, set_normals_f32, try_normals, normals, try_normals_mut, normals_mut, normals_to_vec
+    }
+    xyz_array! {
+        COLORS, "colors (RGB in `[0, 1]`)",
+        has_colors, set_colors, set_colors_f32, try_colors, colors, try_colors_mut, colors_mut, colors_to_vec
+    }
+}
+
 impl PointCloud {
     /// A new empty cloud.
     pub fn new() -> Result<PointCloud> {
@@ -136,21 +214,6 @@ impl PointCloud {
         self.len() == 0
     }
 
-    /// True if the cloud has points.
-    pub fn has_points(&self) -> Result<bool> {
-        ARRAYS.has(self, POINTS)
-    }
-
-    /// True if the cloud has one normal per point.
-    pub fn has_normals(&self) -> Result<bool> {
-        ARRAYS.has(self, NORMALS)
-    }
-
-    /// True if the cloud has one color per point.
-    pub fn has_colors(&self) -> Result<bool> {
-        ARRAYS.has(self, COLORS)
-    }
-
     /// True when the cloud has one covariance per point.
     pub fn has_covariances(&self) -> Result<bool> {
         ARRAYS.has(self, COVARIANCES)
@@ -162,119 +225,14 @@ impl PointCloud {
         check(unsafe { sys::o3d_pointcloud_clear(self.raw_mut()) })
     }
 
-    /// Replace the points (copied once). Normals and colors are kept as they are.
-    pub fn set_points(&mut self, points: &[[f64; 3]]) -> Result<()> {
-        ARRAYS.set(self, POINTS, points)
-    }
-
-    /// Replace the points from float32 input (converted in the single copy).
-    pub fn set_points_f32(&mut self, points: &[[f32; 3]]) -> Result<()> {
-        ARRAYS.set_f32(self, POINTS, points)
-    }
-
-    /// Replace the normals.
-    pub fn set_normals(&mut self, normals: &[[f64; 3]]) -> Result<()> {
-        ARRAYS.set(self, NORMALS, normals)
-    }
-
-    /// Replace the normals from float32 input.
-    pub fn set_normals_f32(&mut self, normals: &[[f32; 3]]) -> Result<()> {
-        ARRAYS.set_f32(self, NORMALS, normals)
-    }
-
-    /// Replace the colors (RGB in `[0, 1]`).
-    pub fn set_colors(&mut self, colors: &[[f64; 3]]) -> Result<()> {
-        ARRAYS.set(self, COLORS, colors)
-    }
-
-    /// Replace the colors from float32 input.
-    pub fn set_colors_f32(&mut self, colors: &[[f32; 3]]) -> Result<()> {
-        ARRAYS.set_f32(self, COLORS, colors)
-    }
-
     /// Replace the covariances (copied once; each must be symmetric).
     pub fn set_covariances(&mut self, covariances: &[Mat3]) -> Result<()> {
         ARRAYS.set(self, COVARIANCES, covariances)
     }
 
-    /// Zero-copy view of the points, borrowed from the cloud.
-    pub fn try_points(&self) -> Result<&[[f64; 3]]> {
-        ARRAYS.view(self, POINTS)
-    }
-
-    /// Zero-copy view of the normals (empty when the cloud has none).
-    pub fn try_normals(&self) -> Result<&[[f64; 3]]> {
-        ARRAYS.view(self, NORMALS)
-    }
-
-    /// Zero-copy view of the colors (empty when the cloud has none).
-    pub fn try_colors(&self) -> Result<&[[f64; 3]]> {
-        ARRAYS.view(self, COLORS)
-    }
-
     /// Zero-copy view of the covariances (empty when the cloud has none), borrowed from the cloud.
     pub fn covariances(&self) -> Result<&[Mat3]> {
         ARRAYS.view(self, COVARIANCES)
-    }
-
-    /// Zero-copy view of the points. Panics if the library refuses (see [`Self::try_points`]).
-    pub fn points(&self) -> &[[f64; 3]] {
-        or_panic(self.try_points(), "o3d_pointcloud_array_view")
-    }
-
-    /// Zero-copy view of the normals. Panics if the library refuses.
-    pub fn normals(&self) -> &[[f64; 3]] {
-        or_panic(self.try_normals(), "o3d_pointcloud_array_view")
-    }
-
-    /// Zero-copy view of the colors. Panics if the library refuses.
-    pub fn colors(&self) -> &[[f64; 3]] {
-        or_panic(self.try_colors(), "o3d_pointcloud_array_view")
-    }
-
-    /// Writable zero-copy view of the points, for in-place edits.
-    pub fn try_points_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        ARRAYS.view_mut(self, POINTS)
-    }
-
-    /// Writable zero-copy view of the normals.
-    pub fn try_normals_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        ARRAYS.view_mut(self, NORMALS)
-    }
-
-    /// Writable zero-copy view of the colors.
-    pub fn try_colors_mut(&mut self) -> Result<&mut [[f64; 3]]> {
-        ARRAYS.view_mut(self, COLORS)
-    }
-
-    /// Writable zero-copy view of the points. Panics if the library refuses.
-    pub fn points_mut(&mut self) -> &mut [[f64; 3]] {
-        or_panic(self.try_points_mut(), "o3d_pointcloud_array_mutable_view")
-    }
-
-    /// Writable zero-copy view of the normals. Panics if the library refuses.
-    pub fn normals_mut(&mut self) -> &mut [[f64; 3]] {
-        or_panic(self.try_normals_mut(), "o3d_pointcloud_array_mutable_view")
-    }
-
-    /// Writable zero-copy view of the colors. Panics if the library refuses.
-    pub fn colors_mut(&mut self) -> &mut [[f64; 3]] {
-        or_panic(self.try_colors_mut(), "o3d_pointcloud_array_mutable_view")
-    }
-
-    /// Copy of the points (`o3d_pointcloud_get_array`).
-    pub fn points_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        ARRAYS.to_vec(self, POINTS)
-    }
-
-    /// Copy of the normals.
-    pub fn normals_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        ARRAYS.to_vec(self, NORMALS)
-    }
-
-    /// Copy of the colors.
-    pub fn colors_to_vec(&self) -> Result<Vec<[f64; 3]>> {
-        ARRAYS.to_vec(self, COLORS)
     }
 
     /// Copy of the covariances.
@@ -325,7 +283,10 @@ impl PointCloud {
         Ok(self)
     }
 
-    fn vec3(&self, f: unsafe extern "C" fn(*mut f64, *const sys::o3d_pointcloud_t) -> sys::o3d_status) -> Result<[f64; 3]> {
+    fn vec3(
+        &self,
+        f: unsafe extern "C" fn(*mut f64, *const sys::o3d_pointcloud_t) -> sys::o3d_status,
+    ) -> Result<[f64; 3]> {
         let mut out = [0.0; 3];
         // SAFETY: room for 3 doubles.
         check(unsafe { f(out.as_mut_ptr(), self.as_raw()) })?;
@@ -526,8 +487,18 @@ impl PointCloud {
         let inliers = self.indices(|idx, cap, n| {
             // SAFETY: valid handle; room for 4 doubles; `idx` has room for `cap` ints.
             unsafe {
-                sys::o3d_pointcloud_segment_plane(plane.as_mut_ptr(), idx, cap, n, self.as_raw(), distance_threshold,
-                    ransac_n, num_iterations, probability, seed, )
+                sys::o3d_pointcloud_segment_plane(
+                    plane.as_mut_ptr(),
+                    idx,
+                    cap,
+                    n,
+                    self.as_raw(),
+                    distance_threshold,
+                    ransac_n,
+                    num_iterations,
+                    probability,
+                    seed,
+                )
             }
         })?;
         Ok((plane, inliers))
@@ -549,8 +520,11 @@ impl PointCloud {
         let mut cov = [[0.0f64; 3]; 3];
         // SAFETY: room for 3 and 9 contiguous doubles.
         check(unsafe {
-            sys::o3d_pointcloud_compute_mean_and_covariance(mean.as_mut_ptr(), cov.as_mut_ptr().cast::<f64>(),
-                self.as_raw(), )
+            sys::o3d_pointcloud_compute_mean_and_covariance(
+                mean.as_mut_ptr(),
+                cov.as_mut_ptr().cast::<f64>(),
+                self.as_raw(),
+            )
         })?;
         Ok((mean, cov))
     }

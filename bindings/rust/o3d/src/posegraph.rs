@@ -5,61 +5,39 @@
 //! that T maps points of node s's frame into node t's: `pose_t^-1 * pose_s ~ T`.
 use std::fmt;
 use std::mem::size_of;
-use std::ops::ControlFlow;
 use std::path::Path;
 
 use o3d_sys as sys;
 
-use crate::error::{check, Error, ErrorCode, Result};
+use crate::error::{check, Result};
 use crate::io::c_path;
-use crate::progress::with_progress;
-use crate::registration::IDENTITY;
-use crate::util::{handle, init_struct, mat4_ptr, to_i32};
+use crate::progress::progress_pair;
+use crate::util::{c_enum, handle, mat4_ptr, options};
 
-/// The 6x6 identity.
-const IDENTITY6: [[f64; 6]; 6] = {
-    let mut m = [[0.0; 6]; 6];
-    let mut i = 0;
-    while i < 6 {
-        m[i][i] = 1.0;
-        i += 1;
-    }
-    m
-};
-
-/// A pose-graph edge (o3d.pipelines.registration.PoseGraphEdge). `Default` is Open3D's: nodes
-/// 0 -> 0, identity transformation and information, certain (odometry), confidence 1.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PoseGraphEdge {
-    /// Index of the source node.
-    pub source_node_id: i32,
-    /// Index of the target node.
-    pub target_node_id: i32,
-    /// Maps points of the source node's frame into the target node's.
-    pub transformation: [[f64; 4]; 4],
-    /// 6x6 information matrix (rotation first, then translation, as Open3D).
-    pub information: [[f64; 6]; 6],
-    /// A loop closure the line process may prune (false: odometry).
-    pub uncertain: bool,
-    /// Line-process weight in [0, 1].
-    pub confidence: f64,
-}
-
-impl Default for PoseGraphEdge {
-    fn default() -> Self {
-        PoseGraphEdge {
-            source_node_id: 0,
-            target_node_id: 0,
-            transformation: IDENTITY,
-            information: IDENTITY6,
-            uncertain: false,
-            confidence: 1.0,
-        }
+options! {
+    /// A pose-graph edge (o3d.pipelines.registration.PoseGraphEdge). `Default` is the library's
+    /// (`o3d_pose_graph_edge_init`, Open3D's): nodes 0 -> 0, identity transformation and
+    /// information, certain (odometry), confidence 1.
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct PoseGraphEdge(sys::o3d_pose_graph_edge_t, sys::o3d_pose_graph_edge_init) {
+        /// Index of the source node.
+        pub source_node_id: i32 = source_node_id,
+        /// Index of the target node.
+        pub target_node_id: i32 = target_node_id,
+        /// Maps points of the source node's frame into the target node's.
+        pub transformation: [[f64; 4]; 4] = transformation,
+        /// 6x6 information matrix (rotation first, then translation, as Open3D).
+        pub information: [[f64; 6]; 6] = information,
+        /// A loop closure the line process may prune (false: odometry).
+        pub uncertain: bool = uncertain,
+        /// Line-process weight in [0, 1].
+        pub confidence: f64 = confidence,
     }
 }
 
 impl PoseGraphEdge {
-    /// Open3D's `PoseGraphEdge(source, target, transformation, information, uncertain)`, confidence 1.
+    /// Open3D's `PoseGraphEdge(source, target, transformation, information, uncertain)`, with the
+    /// default confidence (1).
     pub fn new(
         source_node_id: i32,
         target_node_id: i32,
@@ -67,50 +45,8 @@ impl PoseGraphEdge {
         information: [[f64; 6]; 6],
         uncertain: bool,
     ) -> PoseGraphEdge {
-        PoseGraphEdge { source_node_id, target_node_id, transformation, information, uncertain, confidence: 1.0 }
+        PoseGraphEdge { source_node_id, target_node_id, transformation, information, uncertain, ..Default::default() }
     }
-
-    /// The library's default edge (`o3d_pose_graph_edge_init`); equal to `Default` for a matching library.
-    pub fn library_default() -> Result<PoseGraphEdge> {
-        Ok(PoseGraphEdge::from_raw(&raw_edge()?))
-    }
-
-    fn from_raw(raw: &sys::o3d_pose_graph_edge_t) -> PoseGraphEdge {
-        let mut e = PoseGraphEdge {
-            source_node_id: raw.source_node_id,
-            target_node_id: raw.target_node_id,
-            uncertain: raw.uncertain != 0,
-            confidence: raw.confidence,
-            ..PoseGraphEdge::default()
-        };
-        for r in 0..4 {
-            e.transformation[r].copy_from_slice(&raw.transformation[4 * r..4 * r + 4]);
-        }
-        for r in 0..6 {
-            e.information[r].copy_from_slice(&raw.information[6 * r..6 * r + 6]);
-        }
-        e
-    }
-
-    fn to_raw(self) -> Result<sys::o3d_pose_graph_edge_t> {
-        let mut raw = raw_edge()?;
-        raw.source_node_id = self.source_node_id;
-        raw.target_node_id = self.target_node_id;
-        for r in 0..4 {
-            raw.transformation[4 * r..4 * r + 4].copy_from_slice(&self.transformation[r]);
-        }
-        for r in 0..6 {
-            raw.information[6 * r..6 * r + 6].copy_from_slice(&self.information[r]);
-        }
-        raw.uncertain = self.uncertain as i32;
-        raw.confidence = self.confidence;
-        Ok(raw)
-    }
-}
-
-fn raw_edge() -> Result<sys::o3d_pose_graph_edge_t> {
-    // SAFETY: o3d_pose_graph_edge_t is plain numbers and nullable pointers; o3d_pose_graph_edge_init is its init.
-    unsafe { init_struct(|p, n| sys::o3d_pose_graph_edge_init(p, n)) }
 }
 
 handle! {
@@ -181,10 +117,10 @@ impl PoseGraph {
 
     /// Edge `index` (out of range: an error).
     pub fn edge(&self, index: usize) -> Result<PoseGraphEdge> {
-        let mut raw = raw_edge()?;
+        let mut raw = PoseGraphEdge::raw_default()?;
         // SAFETY: valid handle; raw is an initialised edge with struct_size set.
         check(unsafe { sys::o3d_pose_graph_get_edge(&mut raw, self.as_raw(), index) })?;
-        Ok(PoseGraphEdge::from_raw(&raw))
+        PoseGraphEdge::from_raw(&raw)
     }
 
     /// Replace edge `index`.
@@ -226,127 +162,60 @@ pub fn write_pose_graph(path: impl AsRef<Path>, graph: &PoseGraph) -> Result<()>
     check(unsafe { sys::o3d_io_write_pose_graph(path.as_ptr(), graph.as_raw()) })
 }
 
-/// Solver of [`global_optimization`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum GlobalOptimizationMethod {
-    /// GlobalOptimizationGaussNewton.
-    GaussNewton,
-    /// GlobalOptimizationLevenbergMarquardt (default).
-    #[default]
-    LevenbergMarquardt,
+c_enum! {
+    /// Solver of [`global_optimization`] (`O3D_GLOBAL_OPTIMIZATION_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub enum GlobalOptimizationMethod("optimization method") {
+        /// GlobalOptimizationGaussNewton.
+        GaussNewton = sys::O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON,
+        /// GlobalOptimizationLevenbergMarquardt (the default).
+        LevenbergMarquardt = sys::O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT,
+    }
 }
 
-/// GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption + method and threads.
-/// `Default` is Open3D's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct GlobalOptimizationOptions {
-    /// Solver (default Levenberg-Marquardt).
-    pub method: GlobalOptimizationMethod,
-    /// Iterations per pass (default 100).
-    pub max_iteration: usize,
-    /// Default 1e-6.
-    pub min_relative_increment: f64,
-    /// Default 1e-6.
-    pub min_relative_residual_increment: f64,
-    /// Default 1e-6.
-    pub min_right_term: f64,
-    /// Default 1e-6.
-    pub min_residual: f64,
-    /// Levenberg-Marquardt damping retries per iteration (default 20).
-    pub max_iteration_lm: usize,
-    /// Levenberg-Marquardt (default 2/3).
-    pub upper_scale_factor: f64,
-    /// Levenberg-Marquardt (default 1/3).
-    pub lower_scale_factor: f64,
-    /// Sets the line-process scale (default 0.075).
-    pub max_correspondence_distance: f64,
-    /// Uncertain edges whose confidence ends below it are removed (default 0.25).
-    pub edge_prune_threshold: f64,
-    /// Weight of loop closures against odometry (default 1.0).
-    pub preference_loop_closure: f64,
-    /// The node kept fixed; `None` (default): the first.
-    pub reference_node: Option<usize>,
-    /// Threads; 0 = the library default (default 0). The result does not depend on it.
-    pub num_threads: usize,
-}
-
-impl Default for GlobalOptimizationOptions {
+impl Default for GlobalOptimizationMethod {
+    /// The library's default (`o3d_global_optimization_options_init`: Levenberg-Marquardt).
     fn default() -> Self {
-        GlobalOptimizationOptions {
-            method: GlobalOptimizationMethod::LevenbergMarquardt,
-            max_iteration: 100,
-            min_relative_increment: 1e-6,
-            min_relative_residual_increment: 1e-6,
-            min_right_term: 1e-6,
-            min_residual: 1e-6,
-            max_iteration_lm: 20,
-            upper_scale_factor: 2.0 / 3.0,
-            lower_scale_factor: 1.0 / 3.0,
-            max_correspondence_distance: 0.075,
-            edge_prune_threshold: 0.25,
-            preference_loop_closure: 1.0,
-            reference_node: None,
-            num_threads: 0,
-        }
+        GlobalOptimizationOptions::default().method
     }
 }
 
-fn raw_global_options() -> Result<sys::o3d_global_optimization_options_t> {
-    // SAFETY: o3d_global_optimization_options_t is plain numbers and nullable pointers; o3d_global_optimization_options_init is its init.
-    unsafe { init_struct(|p, n| sys::o3d_global_optimization_options_init(p, n)) }
-}
-
-impl GlobalOptimizationOptions {
-    /// The library's defaults (`o3d_global_optimization_options_init`); equal to `Default` for a
-    /// matching library.
-    pub fn library_defaults() -> Result<GlobalOptimizationOptions> {
-        let raw = raw_global_options()?;
-        let method = match raw.method {
-            sys::O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON => GlobalOptimizationMethod::GaussNewton,
-            sys::O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT => GlobalOptimizationMethod::LevenbergMarquardt,
-            other => return Err(Error::new(ErrorCode::Internal, format!("unknown optimization method {other}"))),
-        };
-        Ok(GlobalOptimizationOptions {
-            method,
-            max_iteration: raw.max_iteration.max(0) as usize,
-            min_relative_increment: raw.min_relative_increment,
-            min_relative_residual_increment: raw.min_relative_residual_increment,
-            min_right_term: raw.min_right_term,
-            min_residual: raw.min_residual,
-            max_iteration_lm: raw.max_iteration_lm.max(0) as usize,
-            upper_scale_factor: raw.upper_scale_factor,
-            lower_scale_factor: raw.lower_scale_factor,
-            max_correspondence_distance: raw.max_correspondence_distance,
-            edge_prune_threshold: raw.edge_prune_threshold,
-            preference_loop_closure: raw.preference_loop_closure,
-            reference_node: usize::try_from(raw.reference_node).ok(),
-            num_threads: raw.num_threads.max(0) as usize,
-        })
-    }
-
-    fn to_raw(self) -> Result<sys::o3d_global_optimization_options_t> {
-        let mut raw = raw_global_options()?;
-        raw.method = match self.method {
-            GlobalOptimizationMethod::GaussNewton => sys::O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON,
-            GlobalOptimizationMethod::LevenbergMarquardt => sys::O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT,
-        };
-        raw.max_iteration = to_i32(self.max_iteration, "max_iteration")?;
-        raw.min_relative_increment = self.min_relative_increment;
-        raw.min_relative_residual_increment = self.min_relative_residual_increment;
-        raw.min_right_term = self.min_right_term;
-        raw.min_residual = self.min_residual;
-        raw.max_iteration_lm = to_i32(self.max_iteration_lm, "max_iteration_lm")?;
-        raw.upper_scale_factor = self.upper_scale_factor;
-        raw.lower_scale_factor = self.lower_scale_factor;
-        raw.max_correspondence_distance = self.max_correspondence_distance;
-        raw.edge_prune_threshold = self.edge_prune_threshold;
-        raw.preference_loop_closure = self.preference_loop_closure;
-        raw.reference_node = match self.reference_node {
-            Some(node) => to_i32(node, "reference_node")?,
-            None => -1,
-        };
-        raw.num_threads = to_i32(self.num_threads, "num_threads")?;
-        Ok(raw)
+options! {
+    /// GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption + method and threads.
+    /// `Default` is the library's (`o3d_global_optimization_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct GlobalOptimizationOptions(
+        sys::o3d_global_optimization_options_t,
+        sys::o3d_global_optimization_options_init
+    ) {
+        /// Solver (default Levenberg-Marquardt).
+        pub method: GlobalOptimizationMethod = method,
+        /// Iterations per pass (default 100).
+        pub max_iteration: usize = max_iteration,
+        /// Default 1e-6.
+        pub min_relative_increment: f64 = min_relative_increment,
+        /// Default 1e-6.
+        pub min_relative_residual_increment: f64 = min_relative_residual_increment,
+        /// Default 1e-6.
+        pub min_right_term: f64 = min_right_term,
+        /// Default 1e-6.
+        pub min_residual: f64 = min_residual,
+        /// Levenberg-Marquardt damping retries per iteration (default 20).
+        pub max_iteration_lm: usize = max_iteration_lm,
+        /// Levenberg-Marquardt (default 2/3).
+        pub upper_scale_factor: f64 = upper_scale_factor,
+        /// Levenberg-Marquardt (default 1/3).
+        pub lower_scale_factor: f64 = lower_scale_factor,
+        /// Sets the line-process scale (default 0.075).
+        pub max_correspondence_distance: f64 = max_correspondence_distance,
+        /// Uncertain edges whose confidence ends below it are removed (default 0.25).
+        pub edge_prune_threshold: f64 = edge_prune_threshold,
+        /// Weight of loop closures against odometry (default 1.0).
+        pub preference_loop_closure: f64 = preference_loop_closure,
+        /// The node kept fixed; `None` (default): the first.
+        pub reference_node: Option<usize> = reference_node,
+        /// Threads; 0 = the library default (default 0). The result does not depend on it.
+        pub num_threads: usize = num_threads,
     }
 }
 
@@ -363,47 +232,33 @@ pub struct GlobalOptimizationSummary {
     pub pruned_edges: usize,
 }
 
-/// Optimize the node poses of `graph` in place (Open3D's global_optimization): optimize with the
-/// line process, remove uncertain edges whose confidence fell below `edge_prune_threshold`,
-/// optimize again; edge confidences are updated. An edge naming a missing node is an error and
-/// leaves `graph` unchanged.
-pub fn global_optimization(
-    graph: &mut PoseGraph,
-    options: &GlobalOptimizationOptions,
-) -> Result<GlobalOptimizationSummary> {
-    let opts = options.to_raw()?;
-    optimize(graph, &opts)
-}
-
-/// As [`global_optimization`], reporting the share of `max_iteration` done over both passes to
-/// `progress` on this thread. `ControlFlow::Break(())` stops with [`ErrorCode::Cancelled`] and
-/// leaves `graph` unchanged; a panic in `progress` cancels and resumes after the call.
-pub fn global_optimization_with_progress<F>(
-    graph: &mut PoseGraph,
-    options: &GlobalOptimizationOptions,
-    progress: F,
-) -> Result<GlobalOptimizationSummary>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    let mut opts = options.to_raw()?;
-    with_progress(progress, |callback, user_data| {
+progress_pair! {
+    /// Optimize the node poses of `graph` in place (Open3D's global_optimization): optimize with the
+    /// line process, remove uncertain edges whose confidence fell below `edge_prune_threshold`,
+    /// optimize again; edge confidences are updated. An edge naming a missing node is an error and
+    /// leaves `graph` unchanged.
+    pub fn global_optimization;
+    /// As [`global_optimization`], reporting the share of `max_iteration` done over both passes to
+    /// `progress` on this thread. `ControlFlow::Break(())` stops with [`crate::ErrorCode::Cancelled`] and
+    /// leaves `graph` unchanged; a panic in `progress` cancels and resumes after the call.
+    pub fn global_optimization_with_progress(
+        graph: &mut PoseGraph,
+        options: &GlobalOptimizationOptions,
+    ) -> Result<GlobalOptimizationSummary>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
         (opts.progress, opts.user_data) = (callback, user_data);
-        optimize(graph, &opts)
-    })
-}
-
-fn optimize(graph: &mut PoseGraph, opts: &sys::o3d_global_optimization_options_t) -> Result<GlobalOptimizationSummary> {
-    let mut raw = sys::o3d_global_optimization_summary_t {
-        struct_size: size_of::<sys::o3d_global_optimization_summary_t>() as u32,
-        ..Default::default()
-    };
-    // SAFETY: valid handle held exclusively, options from init, summary with struct_size set.
-    check(unsafe { sys::o3d_global_optimization(&mut raw, graph.raw.as_ptr(), opts) })?;
-    Ok(GlobalOptimizationSummary {
-        iterations: raw.iterations.max(0) as usize,
-        initial_residual: raw.initial_residual,
-        final_residual: raw.final_residual,
-        pruned_edges: raw.pruned_edges.max(0) as usize,
-    })
+        let mut raw = sys::o3d_global_optimization_summary_t {
+            struct_size: size_of::<sys::o3d_global_optimization_summary_t>() as u32,
+            ..Default::default()
+        };
+        // SAFETY: valid handle held exclusively, options from init, summary with struct_size set.
+        check(unsafe { sys::o3d_global_optimization(&mut raw, graph.raw.as_ptr(), &opts) })?;
+        Ok(GlobalOptimizationSummary {
+            iterations: raw.iterations.max(0) as usize,
+            initial_residual: raw.initial_residual,
+            final_residual: raw.final_residual,
+            pruned_edges: raw.pruned_edges.max(0) as usize,
+        })
+    }
 }

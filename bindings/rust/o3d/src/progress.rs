@@ -30,3 +30,31 @@ where
     let user_data = &mut callback as *mut &mut ProgressFn<'_> as *mut c_void;
     call(Some(progress_trampoline), user_data)
 }
+
+/// A long call and its `_with_progress` twin from one body: `|callback, user_data| body` runs with
+/// the C progress fields NULL in the plain function, and wired to the closure (as
+/// [`with_progress`]) in the twin, which takes a trailing `progress: F`.
+macro_rules! progress_pair {
+    (
+        $(#[$doc:meta])* pub fn $plain:ident;
+        $(#[$pdoc:meta])* pub fn $with:ident($($arg:ident: $ty:ty),+ $(,)?) -> $ret:ty;
+        |$cb:ident, $ud:ident| $body:expr
+    ) => {
+        $(#[$doc])*
+        #[allow(clippy::too_many_arguments)]
+        pub fn $plain($($arg: $ty),+) -> $ret {
+            let run = |$cb: o3d_sys::o3d_progress_callback, $ud: *mut std::ffi::c_void| -> $ret { $body };
+            run(None, std::ptr::null_mut())
+        }
+
+        $(#[$pdoc])*
+        #[allow(clippy::too_many_arguments)]
+        pub fn $with<F>($($arg: $ty),+, progress: F) -> $ret
+        where
+            F: FnMut(f64) -> std::ops::ControlFlow<()>,
+        {
+            crate::progress::with_progress(progress, |$cb, $ud| -> $ret { $body })
+        }
+    };
+}
+pub(crate) use progress_pair;

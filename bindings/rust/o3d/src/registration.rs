@@ -2,15 +2,14 @@
 //! generalized, symmetric, with robust kernels), evaluation, information matrix; features and
 //! global registration (RANSAC, FGR, [`registration_global`](crate::registration)); pose graphs
 //! and global optimization. Transformations are row-major 4x4 (`[[f64; 4]; 4]`, `m[row][col]`).
-use std::ops::ControlFlow;
 use std::ptr::{self, NonNull};
 
 use o3d_sys as sys;
 
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::pointcloud::PointCloud;
-use crate::util::{copy_out, init_struct};
-use crate::progress::with_progress;
+use crate::progress::progress_pair;
+use crate::util::{c_enum, copy_out, options, CField};
 
 pub use crate::feature::{
     compute_fpfh_feature, compute_fpfh_feature_with, correspondences_from_features, Feature, MatchOptions,
@@ -25,53 +24,37 @@ pub use crate::registration_global::*;
 pub const IDENTITY: [[f64; 4]; 4] =
     [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
-/// Transformation estimation method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Estimation {
-    /// TransformationEstimationPointToPoint (with optional scaling, see [`IcpOptions::with_scaling`]).
-    #[default]
-    PointToPoint,
-    /// TransformationEstimationPointToPlane (the target needs normals).
-    PointToPlane,
-    /// TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the
-    /// target normals; see [`IcpOptions::lambda_geometric`].
-    Colored,
-    /// TransformationEstimationForGeneralizedICP (Segal et al. 2009): covariances come from the
-    /// clouds, else from their normals, else from 20 neighbours; see [`IcpOptions::epsilon`].
-    Generalized,
-    /// TransformationEstimationSymmetric (Rusinkiewicz 2019): both clouds need normals.
-    Symmetric,
+c_enum! {
+    /// Transformation estimation method (`O3D_ESTIMATION_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub enum Estimation("estimation") {
+        /// TransformationEstimationPointToPoint (with optional scaling, see [`IcpOptions::with_scaling`]).
+        PointToPoint = sys::O3D_ESTIMATION_POINT_TO_POINT,
+        /// TransformationEstimationPointToPlane (the target needs normals).
+        PointToPlane = sys::O3D_ESTIMATION_POINT_TO_PLANE,
+        /// TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the
+        /// target normals; see [`IcpOptions::lambda_geometric`].
+        Colored = sys::O3D_ESTIMATION_COLORED,
+        /// TransformationEstimationForGeneralizedICP (Segal et al. 2009): covariances come from the
+        /// clouds, else from their normals, else from 20 neighbours; see [`IcpOptions::epsilon`].
+        Generalized = sys::O3D_ESTIMATION_GENERALIZED,
+        /// TransformationEstimationSymmetric (Rusinkiewicz 2019): both clouds need normals.
+        Symmetric = sys::O3D_ESTIMATION_SYMMETRIC,
+    }
 }
 
-impl Estimation {
-    pub(crate) fn raw(self) -> i32 {
-        match self {
-            Estimation::PointToPoint => sys::O3D_ESTIMATION_POINT_TO_POINT,
-            Estimation::PointToPlane => sys::O3D_ESTIMATION_POINT_TO_PLANE,
-            Estimation::Colored => sys::O3D_ESTIMATION_COLORED,
-            Estimation::Generalized => sys::O3D_ESTIMATION_GENERALIZED,
-            Estimation::Symmetric => sys::O3D_ESTIMATION_SYMMETRIC,
-        }
-    }
-
-    pub(crate) fn from_raw(raw: i32) -> Result<Estimation> {
-        Ok(match raw {
-            sys::O3D_ESTIMATION_POINT_TO_POINT => Estimation::PointToPoint,
-            sys::O3D_ESTIMATION_POINT_TO_PLANE => Estimation::PointToPlane,
-            sys::O3D_ESTIMATION_COLORED => Estimation::Colored,
-            sys::O3D_ESTIMATION_GENERALIZED => Estimation::Generalized,
-            sys::O3D_ESTIMATION_SYMMETRIC => Estimation::Symmetric,
-            other => return Err(Error::new(ErrorCode::Internal, format!("unknown estimation {other}"))),
-        })
+impl Default for Estimation {
+    /// The library's default (`o3d_icp_options_init`: point-to-point).
+    fn default() -> Self {
+        IcpOptions::default().estimation
     }
 }
 
 /// Robust kernel (M-estimator) weighting each residual `r` of point-to-plane, colored,
 /// generalized and symmetric ICP; `k` is its scale (Open3D's `L2Loss()`, `TukeyLoss(k)`, ...).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum RobustKernel {
     /// w = 1 (plain least squares).
-    #[default]
     L2,
     /// w = 1 / |r|.
     L1,
@@ -110,7 +93,7 @@ impl RobustKernel {
         }
     }
 
-    fn from_raw(kernel: i32, k: f64) -> Result<RobustKernel> {
+    pub(crate) fn from_raw(kernel: i32, k: f64) -> Result<RobustKernel> {
         Ok(match kernel {
             sys::O3D_KERNEL_L2 => RobustKernel::L2,
             sys::O3D_KERNEL_L1 => RobustKernel::L1,
@@ -133,84 +116,46 @@ impl RobustKernel {
     }
 }
 
-/// ICP options: estimation method, robust kernel and ICPConvergenceCriteria. `Default` is Open3D's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct IcpOptions {
-    /// Estimation method (default point-to-point).
-    pub estimation: Estimation,
-    /// Point-to-point only: also estimate a scale (default false).
-    pub with_scaling: bool,
-    /// Stop when fitness changes less than this (default 1e-6).
-    pub relative_fitness: f64,
-    /// Stop when inlier RMSE changes less than this (default 1e-6).
-    pub relative_rmse: f64,
-    /// Iteration limit (default 30).
-    pub max_iteration: usize,
-    /// Threads; 0 = the library default (default 0).
-    pub num_threads: usize,
-    /// Robust kernel of point-to-plane, colored, generalized and symmetric ICP (default L2).
-    pub kernel: RobustKernel,
-    /// Colored ICP: weight of the geometric term, in [0, 1] (default 0.968).
-    pub lambda_geometric: f64,
-    /// Generalized ICP: covariance regularisation, > 0 (default 1e-3).
-    pub epsilon: f64,
-}
-
-impl Default for IcpOptions {
+impl Default for RobustKernel {
+    /// The library's default (`o3d_icp_options_init`: L2).
     fn default() -> Self {
-        IcpOptions {
-            estimation: Estimation::PointToPoint,
-            with_scaling: false,
-            relative_fitness: 1e-6,
-            relative_rmse: 1e-6,
-            max_iteration: 30,
-            num_threads: 0,
-            kernel: RobustKernel::L2,
-            lambda_geometric: 0.968,
-            epsilon: 1e-3,
-        }
+        IcpOptions::default().kernel
     }
 }
 
-fn to_i32(what: &str, n: usize) -> Result<i32> {
-    i32::try_from(n).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("{what} {n} is too large")))
-}
-
-impl IcpOptions {
-    /// The library's defaults (`o3d_icp_options_init`); equal to `Default` for a matching library.
-    pub fn library_defaults() -> Result<IcpOptions> {
-        let raw = raw_icp_options()?;
-        Ok(IcpOptions {
-            estimation: Estimation::from_raw(raw.estimation)?,
-            with_scaling: raw.with_scaling != 0,
-            relative_fitness: raw.relative_fitness,
-            relative_rmse: raw.relative_rmse,
-            max_iteration: raw.max_iteration.max(0) as usize,
-            num_threads: raw.num_threads.max(0) as usize,
-            kernel: RobustKernel::from_raw(raw.kernel, raw.kernel_k)?,
-            lambda_geometric: raw.lambda_geometric,
-            epsilon: raw.epsilon,
-        })
+impl CField<(i32, f64)> for RobustKernel {
+    fn to_c(&self, _: &str) -> Result<(i32, f64)> {
+        Ok(self.raw())
     }
-
-    fn to_raw(self) -> Result<sys::o3d_icp_options_t> {
-        let mut raw = raw_icp_options()?;
-        raw.estimation = self.estimation.raw();
-        raw.with_scaling = self.with_scaling as i32;
-        raw.relative_fitness = self.relative_fitness;
-        raw.relative_rmse = self.relative_rmse;
-        raw.max_iteration = to_i32("max_iteration", self.max_iteration)?;
-        raw.num_threads = to_i32("num_threads", self.num_threads)?;
-        (raw.kernel, raw.kernel_k) = self.kernel.raw();
-        raw.lambda_geometric = self.lambda_geometric;
-        raw.epsilon = self.epsilon;
-        Ok(raw)
+    fn from_c((kernel, k): (i32, f64)) -> Result<RobustKernel> {
+        RobustKernel::from_raw(kernel, k)
     }
 }
 
-fn raw_icp_options() -> Result<sys::o3d_icp_options_t> {
-    // SAFETY: o3d_icp_options_t is plain numbers and nullable pointers; o3d_icp_options_init is its init.
-    unsafe { init_struct(|p, n| sys::o3d_icp_options_init(p, n)) }
+options! {
+    /// ICP options: estimation method, robust kernel and ICPConvergenceCriteria. `Default` is the
+    /// library's (`o3d_icp_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct IcpOptions(sys::o3d_icp_options_t, sys::o3d_icp_options_init) {
+        /// Estimation method (default point-to-point).
+        pub estimation: Estimation = estimation,
+        /// Point-to-point only: also estimate a scale (default false).
+        pub with_scaling: bool = with_scaling,
+        /// Stop when fitness changes less than this (default 1e-6).
+        pub relative_fitness: f64 = relative_fitness,
+        /// Stop when inlier RMSE changes less than this (default 1e-6).
+        pub relative_rmse: f64 = relative_rmse,
+        /// Iteration limit (default 30).
+        pub max_iteration: usize = max_iteration,
+        /// Threads; 0 = the library default (default 0).
+        pub num_threads: usize = num_threads,
+        /// Robust kernel of point-to-plane, colored, generalized and symmetric ICP (default L2).
+        pub kernel: RobustKernel = (kernel, kernel_k),
+        /// Colored ICP: weight of the geometric term, in [0, 1] (default 0.968).
+        pub lambda_geometric: f64 = lambda_geometric,
+        /// Generalized ICP: covariance regularisation, > 0 (default 1e-3).
+        pub epsilon: f64 = epsilon,
+    }
 }
 
 /// Result of a registration (o3d.pipelines.registration.RegistrationResult).
@@ -265,45 +210,22 @@ pub(crate) fn read_result(
     Ok(r)
 }
 
-/// Iterative closest point from `source` onto `target`, starting at `init`.
-/// Pairs farther apart than `max_correspondence_distance` are ignored.
-pub fn registration_icp(
-    source: &PointCloud,
-    target: &PointCloud,
-    max_correspondence_distance: f64,
-    init: &[[f64; 4]; 4],
-    options: &IcpOptions,
-) -> Result<RegistrationResult> {
-    let opts = options.to_raw()?;
-    // SAFETY: valid handles, 16 doubles, valid options without callback.
-    read_result(|out| unsafe {
-        sys::o3d_register_icp(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            max_correspondence_distance,
-            init.as_ptr().cast(),
-            &opts,
-        )
-    })
-}
-
-/// As [`registration_icp`], calling `progress(iteration / max_iteration)` after each iteration on
-/// this thread. Return `ControlFlow::Break(())` to stop: the call then fails with
-/// [`ErrorCode::Cancelled`]. A panic in `progress` cancels the call and resumes after it.
-pub fn registration_icp_with_progress<F>(
-    source: &PointCloud,
-    target: &PointCloud,
-    max_correspondence_distance: f64,
-    init: &[[f64; 4]; 4],
-    options: &IcpOptions,
-    progress: F,
-) -> Result<RegistrationResult>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    let mut opts = options.to_raw()?;
-    with_progress(progress, |callback, user_data| {
+progress_pair! {
+    /// Iterative closest point from `source` onto `target`, starting at `init`.
+    /// Pairs farther apart than `max_correspondence_distance` are ignored.
+    pub fn registration_icp;
+    /// As [`registration_icp`], calling `progress(iteration / max_iteration)` after each iteration on
+    /// this thread. Return `ControlFlow::Break(())` to stop: the call then fails with
+    /// [`ErrorCode::Cancelled`]. A panic in `progress` cancels the call and resumes after it.
+    pub fn registration_icp_with_progress(
+        source: &PointCloud,
+        target: &PointCloud,
+        max_correspondence_distance: f64,
+        init: &[[f64; 4]; 4],
+        options: &IcpOptions,
+    ) -> Result<RegistrationResult>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
         (opts.progress, opts.user_data) = (callback, user_data);
         // SAFETY: valid handles, 16 doubles; user_data outlives the call.
         read_result(|out| unsafe {
@@ -316,7 +238,7 @@ where
                 &opts,
             )
         })
-    })
+    }
 }
 
 /// ICP with `estimation` in place of `options.estimation`.
@@ -397,8 +319,13 @@ pub fn get_information_matrix_from_point_clouds(
     let mut out = [[0.0; 6]; 6];
     // SAFETY: valid handles, 16 doubles in, room for 36 doubles out.
     check(unsafe {
-        sys::o3d_get_information_matrix_from_point_clouds(out.as_mut_ptr().cast(), source.as_raw(), target.as_raw(),
-            max_correspondence_distance, transformation.as_ptr().cast(), )
+        sys::o3d_get_information_matrix_from_point_clouds(
+            out.as_mut_ptr().cast(),
+            source.as_raw(),
+            target.as_raw(),
+            max_correspondence_distance,
+            transformation.as_ptr().cast(),
+        )
     })?;
     Ok(out)
 }

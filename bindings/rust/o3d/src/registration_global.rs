@@ -1,6 +1,5 @@
 //! Global registration (re-exported by [`crate::registration`]): correspondence checkers, RANSAC
 //! over feature matches or given correspondences, Fast Global Registration.
-use std::ops::ControlFlow;
 use std::ptr;
 
 use o3d_sys as sys;
@@ -8,9 +7,9 @@ use o3d_sys as sys;
 use crate::error::{check, Result};
 use crate::feature::Feature;
 use crate::pointcloud::PointCloud;
-use crate::progress::with_progress;
+use crate::progress::progress_pair;
 use crate::registration::{read_result, Estimation, RegistrationResult};
-use crate::util::{init_struct, mat4_ptr, to_i32};
+use crate::util::{init_struct, mat4_ptr, options};
 
 /// A test that prunes RANSAC hypotheses early (Open3D's `CorrespondenceChecker*`). The threshold
 /// must be finite and positive.
@@ -72,8 +71,15 @@ impl CorrespondenceChecker {
         let mut passed = 0;
         // SAFETY: valid handles; corres.len() pairs of int32; 16 doubles.
         check(unsafe {
-            sys::o3d_correspondence_checker_check(&mut passed, &raw, source.as_raw(), target.as_raw(),
-                corres.as_ptr().cast(), corres.len(), mat4_ptr(transformation), )
+            sys::o3d_correspondence_checker_check(
+                &mut passed,
+                &raw,
+                source.as_raw(),
+                target.as_raw(),
+                corres.as_ptr().cast(),
+                corres.len(),
+                mat4_ptr(transformation),
+            )
         })?;
         Ok(passed != 0)
     }
@@ -91,424 +97,189 @@ fn checkers_ptr(raw: &[sys::o3d_correspondence_checker_t]) -> *const sys::o3d_co
     }
 }
 
-/// RANSAC options: estimation, ransac_n, RANSACConvergenceCriteria, seed, threads.
-/// `Default` is Open3D's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RansacOptions {
-    /// [`Estimation::PointToPoint`] (default) or [`Estimation::PointToPlane`].
-    pub estimation: Estimation,
-    /// Point-to-point: also estimate a scale (default false).
-    pub with_scaling: bool,
-    /// Correspondences drawn per hypothesis, >= 3 (default 3).
-    pub ransac_n: usize,
-    /// RANSACConvergenceCriteria.max_iteration (default 100000).
-    pub max_iteration: usize,
-    /// RANSACConvergenceCriteria.confidence, in [0, 1] (default 0.999).
-    pub confidence: f64,
-    /// Feature matching only: keep mutual nearest pairs (default false).
-    pub mutual_filter: bool,
-    /// Draw from this seed; `None` (default) takes one from the global generator
-    /// ([`crate::random_seed`]). The same seed gives the same result on any thread count.
-    pub seed: Option<u64>,
-    /// Threads; 0 = the library default (default 0).
-    pub num_threads: usize,
-}
-
-impl Default for RansacOptions {
-    fn default() -> Self {
-        RansacOptions {
-            estimation: Estimation::PointToPoint,
-            with_scaling: false,
-            ransac_n: 3,
-            max_iteration: 100_000,
-            confidence: 0.999,
-            mutual_filter: false,
-            seed: None,
-            num_threads: 0,
-        }
+options! {
+    /// RANSAC options: estimation, ransac_n, RANSACConvergenceCriteria, seed, threads.
+    /// `Default` is the library's (`o3d_ransac_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct RansacOptions(sys::o3d_ransac_options_t, sys::o3d_ransac_options_init) {
+        /// [`Estimation::PointToPoint`] (default) or [`Estimation::PointToPlane`].
+        pub estimation: Estimation = estimation,
+        /// Point-to-point: also estimate a scale (default false).
+        pub with_scaling: bool = with_scaling,
+        /// Correspondences drawn per hypothesis, >= 3 (default 3).
+        pub ransac_n: usize = ransac_n,
+        /// RANSACConvergenceCriteria.max_iteration (default 100000).
+        pub max_iteration: usize = max_iteration,
+        /// RANSACConvergenceCriteria.confidence, in [0, 1] (default 0.999).
+        pub confidence: f64 = confidence,
+        /// Feature matching only: keep mutual nearest pairs (default false).
+        pub mutual_filter: bool = mutual_filter,
+        /// Draw from this seed; `None` (default) takes one from the global generator
+        /// ([`crate::random_seed`]). The same seed gives the same result on any thread count.
+        pub seed: Option<u64> = (use_seed, seed),
+        /// Threads; 0 = the library default (default 0).
+        pub num_threads: usize = num_threads,
     }
 }
 
-fn raw_ransac_options() -> Result<sys::o3d_ransac_options_t> {
-    // SAFETY: o3d_ransac_options_t is plain numbers and nullable pointers; o3d_ransac_options_init is its init.
-    unsafe { init_struct(|p, n| sys::o3d_ransac_options_init(p, n)) }
-}
-
-impl RansacOptions {
-    /// The library's defaults (`o3d_ransac_options_init`); equal to `Default` for a matching library.
-    pub fn library_defaults() -> Result<RansacOptions> {
-        let raw = raw_ransac_options()?;
-        Ok(RansacOptions {
-            estimation: Estimation::from_raw(raw.estimation)?,
-            with_scaling: raw.with_scaling != 0,
-            ransac_n: raw.ransac_n.max(0) as usize,
-            max_iteration: raw.max_iteration.max(0) as usize,
-            confidence: raw.confidence,
-            mutual_filter: raw.mutual_filter != 0,
-            seed: (raw.use_seed != 0).then_some(raw.seed),
-            num_threads: raw.num_threads.max(0) as usize,
+progress_pair! {
+    /// RANSAC over feature correspondences (the nearest target descriptor of each source descriptor):
+    /// each hypothesis fits `ransac_n` drawn pairs, must pass every checker, and is scored by the
+    /// share of pairs within `max_correspondence_distance` after the move.
+    /// @see o3d.pipelines.registration.registration_ransac_based_on_feature_matching
+    pub fn registration_ransac_based_on_feature_matching;
+    /// As [`registration_ransac_based_on_feature_matching`], reporting the share of `max_iteration`
+    /// done to `progress` on this thread (it jumps to 1 when confident). Return
+    /// `ControlFlow::Break(())` to stop with [`crate::ErrorCode::Cancelled`]; a panic cancels and resumes.
+    pub fn registration_ransac_based_on_feature_matching_with_progress(
+        source: &PointCloud,
+        target: &PointCloud,
+        source_feature: &Feature,
+        target_feature: &Feature,
+        max_correspondence_distance: f64,
+        checkers: &[CorrespondenceChecker],
+        options: &RansacOptions,
+    ) -> Result<RegistrationResult>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
+        (opts.progress, opts.user_data) = (callback, user_data);
+        let raw = raw_checkers(checkers)?;
+        // SAFETY: valid handles; raw.len() checkers (NULL when none); user_data outlives the call.
+        read_result(|out| unsafe {
+            sys::o3d_register_ransac_based_on_feature_matching(
+                out,
+                source.as_raw(),
+                target.as_raw(),
+                source_feature.as_raw(),
+                target_feature.as_raw(),
+                max_correspondence_distance,
+                checkers_ptr(&raw),
+                raw.len(),
+                &opts,
+            )
         })
     }
-
-    fn to_raw(self) -> Result<sys::o3d_ransac_options_t> {
-        let mut raw = raw_ransac_options()?;
-        raw.estimation = self.estimation.raw();
-        raw.with_scaling = self.with_scaling as i32;
-        raw.ransac_n = to_i32(self.ransac_n, "ransac_n")?;
-        raw.max_iteration = to_i32(self.max_iteration, "max_iteration")?;
-        raw.confidence = self.confidence;
-        raw.mutual_filter = self.mutual_filter as i32;
-        raw.use_seed = self.seed.is_some() as i32;
-        raw.seed = self.seed.unwrap_or(0);
-        raw.num_threads = to_i32(self.num_threads, "num_threads")?;
-        Ok(raw)
-    }
 }
 
-/// RANSAC over feature correspondences (the nearest target descriptor of each source descriptor):
-/// each hypothesis fits `ransac_n` drawn pairs, must pass every checker, and is scored by the
-/// share of pairs within `max_correspondence_distance` after the move.
-/// @see o3d.pipelines.registration.registration_ransac_based_on_feature_matching
-#[allow(clippy::too_many_arguments)]
-pub fn registration_ransac_based_on_feature_matching(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-) -> Result<RegistrationResult> {
-    ransac_features(
-        source,
-        target,
-        source_feature,
-        target_feature,
-        max_correspondence_distance,
-        checkers,
-        options,
-        None,
-    )
-}
-
-/// As [`registration_ransac_based_on_feature_matching`], reporting the share of `max_iteration`
-/// done to `progress` on this thread (it jumps to 1 when confident). Return
-/// `ControlFlow::Break(())` to stop with [`crate::ErrorCode::Cancelled`]; a panic cancels and resumes.
-#[allow(clippy::too_many_arguments)]
-pub fn registration_ransac_based_on_feature_matching_with_progress<F>(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-    progress: F,
-) -> Result<RegistrationResult>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    with_progress(progress, |callback, user_data| {
-        ransac_features(
-            source,
-            target,
-            source_feature,
-            target_feature,
-            max_correspondence_distance,
-            checkers,
-            options,
-            Some((callback, user_data)),
-        )
-    })
-}
-
-type RawProgress = (sys::o3d_progress_callback, *mut std::ffi::c_void);
-
-#[allow(clippy::too_many_arguments)]
-fn ransac_features(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-    progress: Option<RawProgress>,
-) -> Result<RegistrationResult> {
-    let mut opts = options.to_raw()?;
-    if let Some((callback, user_data)) = progress {
+progress_pair! {
+    /// RANSAC over given (source, target) pairs (`options.mutual_filter` is ignored).
+    /// @see o3d.pipelines.registration.registration_ransac_based_on_correspondence
+    pub fn registration_ransac_based_on_correspondence;
+    /// As [`registration_ransac_based_on_correspondence`] with a progress closure (see
+    /// [`registration_ransac_based_on_feature_matching_with_progress`]).
+    pub fn registration_ransac_based_on_correspondence_with_progress(
+        source: &PointCloud,
+        target: &PointCloud,
+        corres: &[[i32; 2]],
+        max_correspondence_distance: f64,
+        checkers: &[CorrespondenceChecker],
+        options: &RansacOptions,
+    ) -> Result<RegistrationResult>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
         (opts.progress, opts.user_data) = (callback, user_data);
-    }
-    let raw = raw_checkers(checkers)?;
-    // SAFETY: valid handles; raw.len() checkers (NULL when none); user_data outlives the call.
-    read_result(|out| unsafe {
-        sys::o3d_register_ransac_based_on_feature_matching(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            source_feature.as_raw(),
-            target_feature.as_raw(),
-            max_correspondence_distance,
-            checkers_ptr(&raw),
-            raw.len(),
-            &opts,
-        )
-    })
-}
-
-/// RANSAC over given (source, target) pairs (`options.mutual_filter` is ignored).
-/// @see o3d.pipelines.registration.registration_ransac_based_on_correspondence
-pub fn registration_ransac_based_on_correspondence(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-) -> Result<RegistrationResult> {
-    ransac_corres(source, target, corres, max_correspondence_distance, checkers, options, None)
-}
-
-/// As [`registration_ransac_based_on_correspondence`] with a progress closure (see
-/// [`registration_ransac_based_on_feature_matching_with_progress`]).
-pub fn registration_ransac_based_on_correspondence_with_progress<F>(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-    progress: F,
-) -> Result<RegistrationResult>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    with_progress(progress, |callback, user_data| {
-        ransac_corres(
-            source,
-            target,
-            corres,
-            max_correspondence_distance,
-            checkers,
-            options,
-            Some((callback, user_data)),
-        )
-    })
-}
-
-fn ransac_corres(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    max_correspondence_distance: f64,
-    checkers: &[CorrespondenceChecker],
-    options: &RansacOptions,
-    progress: Option<RawProgress>,
-) -> Result<RegistrationResult> {
-    let mut opts = options.to_raw()?;
-    if let Some((callback, user_data)) = progress {
-        (opts.progress, opts.user_data) = (callback, user_data);
-    }
-    let raw = raw_checkers(checkers)?;
-    // SAFETY: valid handles; corres.len() pairs; raw.len() checkers; user_data outlives the call.
-    read_result(|out| unsafe {
-        sys::o3d_register_ransac_based_on_correspondence(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            corres.as_ptr().cast(),
-            corres.len(),
-            max_correspondence_distance,
-            checkers_ptr(&raw),
-            raw.len(),
-            &opts,
-        )
-    })
-}
-
-/// FastGlobalRegistrationOption plus seed and threads. `Default` is Open3D's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FgrOptions {
-    /// > 1: mu is divided by it each annealing step (default 1.4).
-    pub division_factor: f64,
-    /// Distances in the clouds' units rather than normalised (default false).
-    pub use_absolute_scale: bool,
-    /// Anneal mu (graduated non-convexity) (default true).
-    pub decrease_mu: bool,
-    /// > 0 (default 0.025).
-    pub maximum_correspondence_distance: f64,
-    /// Iterations (default 64).
-    pub iteration_number: usize,
-    /// In (0, 1]: edge-length similarity of the tuple test (default 0.95).
-    pub tuple_scale: f64,
-    /// Tuples kept at most (default 1000).
-    pub maximum_tuple_count: usize,
-    /// Apply the tuple test (default true).
-    pub tuple_test: bool,
-    /// As [`RansacOptions::seed`]: tuples are drawn at random (default `None`).
-    pub seed: Option<u64>,
-    /// Threads; 0 = the library default (default 0).
-    pub num_threads: usize,
-}
-
-impl Default for FgrOptions {
-    fn default() -> Self {
-        FgrOptions {
-            division_factor: 1.4,
-            use_absolute_scale: false,
-            decrease_mu: true,
-            maximum_correspondence_distance: 0.025,
-            iteration_number: 64,
-            tuple_scale: 0.95,
-            maximum_tuple_count: 1000,
-            tuple_test: true,
-            seed: None,
-            num_threads: 0,
-        }
-    }
-}
-
-fn raw_fgr_options() -> Result<sys::o3d_fgr_options_t> {
-    // SAFETY: o3d_fgr_options_t is plain numbers and nullable pointers; o3d_fgr_options_init is its init.
-    unsafe { init_struct(|p, n| sys::o3d_fgr_options_init(p, n)) }
-}
-
-impl FgrOptions {
-    /// The library's defaults (`o3d_fgr_options_init`); equal to `Default` for a matching library.
-    pub fn library_defaults() -> Result<FgrOptions> {
-        let raw = raw_fgr_options()?;
-        Ok(FgrOptions {
-            division_factor: raw.division_factor,
-            use_absolute_scale: raw.use_absolute_scale != 0,
-            decrease_mu: raw.decrease_mu != 0,
-            maximum_correspondence_distance: raw.maximum_correspondence_distance,
-            iteration_number: raw.iteration_number.max(0) as usize,
-            tuple_scale: raw.tuple_scale,
-            maximum_tuple_count: raw.maximum_tuple_count.max(0) as usize,
-            tuple_test: raw.tuple_test != 0,
-            seed: (raw.use_seed != 0).then_some(raw.seed),
-            num_threads: raw.num_threads.max(0) as usize,
+        let raw = raw_checkers(checkers)?;
+        // SAFETY: valid handles; corres.len() pairs; raw.len() checkers; user_data outlives the call.
+        read_result(|out| unsafe {
+            sys::o3d_register_ransac_based_on_correspondence(
+                out,
+                source.as_raw(),
+                target.as_raw(),
+                corres.as_ptr().cast(),
+                corres.len(),
+                max_correspondence_distance,
+                checkers_ptr(&raw),
+                raw.len(),
+                &opts,
+            )
         })
     }
+}
 
-    fn to_raw(self, progress: Option<RawProgress>) -> Result<sys::o3d_fgr_options_t> {
-        let mut raw = raw_fgr_options()?;
-        raw.division_factor = self.division_factor;
-        raw.use_absolute_scale = self.use_absolute_scale as i32;
-        raw.decrease_mu = self.decrease_mu as i32;
-        raw.maximum_correspondence_distance = self.maximum_correspondence_distance;
-        raw.iteration_number = to_i32(self.iteration_number, "iteration_number")?;
-        raw.tuple_scale = self.tuple_scale;
-        raw.maximum_tuple_count = to_i32(self.maximum_tuple_count, "maximum_tuple_count")?;
-        raw.tuple_test = self.tuple_test as i32;
-        raw.use_seed = self.seed.is_some() as i32;
-        raw.seed = self.seed.unwrap_or(0);
-        raw.num_threads = to_i32(self.num_threads, "num_threads")?;
-        if let Some((callback, user_data)) = progress {
-            (raw.progress, raw.user_data) = (callback, user_data);
-        }
-        Ok(raw)
+options! {
+    /// FastGlobalRegistrationOption plus seed and threads. `Default` is the library's
+    /// (`o3d_fgr_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct FgrOptions(sys::o3d_fgr_options_t, sys::o3d_fgr_options_init) {
+        /// > 1: mu is divided by it each annealing step (default 1.4).
+        pub division_factor: f64 = division_factor,
+        /// Distances in the clouds' units rather than normalised (default false).
+        pub use_absolute_scale: bool = use_absolute_scale,
+        /// Anneal mu (graduated non-convexity) (default true).
+        pub decrease_mu: bool = decrease_mu,
+        /// > 0 (default 0.025).
+        pub maximum_correspondence_distance: f64 = maximum_correspondence_distance,
+        /// Iterations (default 64).
+        pub iteration_number: usize = iteration_number,
+        /// In (0, 1]: edge-length similarity of the tuple test (default 0.95).
+        pub tuple_scale: f64 = tuple_scale,
+        /// Tuples kept at most (default 1000).
+        pub maximum_tuple_count: usize = maximum_tuple_count,
+        /// Apply the tuple test (default true).
+        pub tuple_test: bool = tuple_test,
+        /// As [`RansacOptions::seed`]: tuples are drawn at random (default `None`).
+        pub seed: Option<u64> = (use_seed, seed),
+        /// Threads; 0 = the library default (default 0).
+        pub num_threads: usize = num_threads,
     }
 }
 
-/// Fast Global Registration (Zhou, Park, Koltun 2016) on mutual feature matches.
-/// @see o3d.pipelines.registration.registration_fgr_based_on_feature_matching
-pub fn registration_fgr_based_on_feature_matching(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    options: &FgrOptions,
-) -> Result<RegistrationResult> {
-    fgr_features(source, target, source_feature, target_feature, options, None)
+progress_pair! {
+    /// Fast Global Registration (Zhou, Park, Koltun 2016) on mutual feature matches.
+    /// @see o3d.pipelines.registration.registration_fgr_based_on_feature_matching
+    pub fn registration_fgr_based_on_feature_matching;
+    /// As [`registration_fgr_based_on_feature_matching`], reporting the share of `iteration_number`
+    /// done to `progress` on this thread; `ControlFlow::Break(())` stops with [`crate::ErrorCode::Cancelled`].
+    pub fn registration_fgr_based_on_feature_matching_with_progress(
+        source: &PointCloud,
+        target: &PointCloud,
+        source_feature: &Feature,
+        target_feature: &Feature,
+        options: &FgrOptions,
+    ) -> Result<RegistrationResult>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
+        (opts.progress, opts.user_data) = (callback, user_data);
+        // SAFETY: valid handles; user_data outlives the call.
+        read_result(|out| unsafe {
+            sys::o3d_register_fgr_based_on_feature_matching(
+                out,
+                source.as_raw(),
+                target.as_raw(),
+                source_feature.as_raw(),
+                target_feature.as_raw(),
+                &opts,
+            )
+        })
+    }
 }
 
-/// As [`registration_fgr_based_on_feature_matching`], reporting the share of `iteration_number`
-/// done to `progress` on this thread; `ControlFlow::Break(())` stops with [`crate::ErrorCode::Cancelled`].
-pub fn registration_fgr_based_on_feature_matching_with_progress<F>(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    options: &FgrOptions,
-    progress: F,
-) -> Result<RegistrationResult>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    with_progress(progress, |callback, user_data| {
-        fgr_features(source, target, source_feature, target_feature, options, Some((callback, user_data)))
-    })
-}
-
-fn fgr_features(
-    source: &PointCloud,
-    target: &PointCloud,
-    source_feature: &Feature,
-    target_feature: &Feature,
-    options: &FgrOptions,
-    progress: Option<RawProgress>,
-) -> Result<RegistrationResult> {
-    let opts = options.to_raw(progress)?;
-    // SAFETY: valid handles; user_data outlives the call.
-    read_result(|out| unsafe {
-        sys::o3d_register_fgr_based_on_feature_matching(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            source_feature.as_raw(),
-            target_feature.as_raw(),
-            &opts,
-        )
-    })
-}
-
-/// Fast Global Registration on given (source, target) pairs.
-/// @see o3d.pipelines.registration.registration_fgr_based_on_correspondence
-pub fn registration_fgr_based_on_correspondence(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    options: &FgrOptions,
-) -> Result<RegistrationResult> {
-    fgr_corres(source, target, corres, options, None)
-}
-
-/// As [`registration_fgr_based_on_correspondence`] with a progress closure.
-pub fn registration_fgr_based_on_correspondence_with_progress<F>(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    options: &FgrOptions,
-    progress: F,
-) -> Result<RegistrationResult>
-where
-    F: FnMut(f64) -> ControlFlow<()>,
-{
-    with_progress(progress, |callback, user_data| {
-        fgr_corres(source, target, corres, options, Some((callback, user_data)))
-    })
-}
-
-fn fgr_corres(
-    source: &PointCloud,
-    target: &PointCloud,
-    corres: &[[i32; 2]],
-    options: &FgrOptions,
-    progress: Option<RawProgress>,
-) -> Result<RegistrationResult> {
-    let opts = options.to_raw(progress)?;
-    // SAFETY: valid handles; corres.len() pairs of int32; user_data outlives the call.
-    read_result(|out| unsafe {
-        sys::o3d_register_fgr_based_on_correspondence(
-            out,
-            source.as_raw(),
-            target.as_raw(),
-            corres.as_ptr().cast(),
-            corres.len(),
-            &opts,
-        )
-    })
+progress_pair! {
+    /// Fast Global Registration on given (source, target) pairs.
+    /// @see o3d.pipelines.registration.registration_fgr_based_on_correspondence
+    pub fn registration_fgr_based_on_correspondence;
+    /// As [`registration_fgr_based_on_correspondence`] with a progress closure.
+    pub fn registration_fgr_based_on_correspondence_with_progress(
+        source: &PointCloud,
+        target: &PointCloud,
+        corres: &[[i32; 2]],
+        options: &FgrOptions,
+    ) -> Result<RegistrationResult>;
+    |callback, user_data| {
+        let mut opts = options.to_raw()?;
+        (opts.progress, opts.user_data) = (callback, user_data);
+        // SAFETY: valid handles; corres.len() pairs of int32; user_data outlives the call.
+        read_result(|out| unsafe {
+            sys::o3d_register_fgr_based_on_correspondence(
+                out,
+                source.as_raw(),
+                target.as_raw(),
+                corres.as_ptr().cast(),
+                corres.len(),
+                &opts,
+            )
+        })
+    }
 }
 
 /// Seed the global generator that RANSAC and FGR draw from when given no seed (without it the

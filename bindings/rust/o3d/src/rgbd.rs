@@ -9,47 +9,35 @@ use crate::camera::PinholeIntrinsic;
 use crate::error::Result;
 use crate::image::{new_image, Image};
 use crate::pointcloud::{new_cloud, PointCloud};
-use crate::util::{handle, init_struct, mat4_ptr};
+use crate::util::{c_enum, handle, mat4_ptr, options};
 
-/// RGBDImage.create_from_color_and_depth keyword arguments (Open3D's defaults).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RgbdOptions {
-    /// Raw depth units per metre (default 1000).
-    pub depth_scale: f64,
-    /// Depths beyond this many metres become 0 (default 3).
-    pub depth_trunc: f64,
-    /// Turn the color into a 1-channel float intensity (default true).
-    pub convert_rgb_to_intensity: bool,
-}
-
-impl Default for RgbdOptions {
-    fn default() -> Self {
-        RgbdOptions { depth_scale: 1000.0, depth_trunc: 3.0, convert_rgb_to_intensity: true }
+options! {
+    /// RGBDImage.create_from_color_and_depth keyword arguments; `Default` is the library's
+    /// (`o3d_rgbd_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct RgbdOptions(sys::o3d_rgbd_options_t, sys::o3d_rgbd_options_init) {
+        /// Raw depth units per metre (default 1000).
+        pub depth_scale: f64 = depth_scale,
+        /// Depths beyond this many metres become 0 (default 3).
+        pub depth_trunc: f64 = depth_trunc,
+        /// Turn the color into a 1-channel float intensity (default true).
+        pub convert_rgb_to_intensity: bool = convert_rgb_to_intensity,
     }
 }
 
-impl RgbdOptions {
-    fn to_raw(self) -> Result<sys::o3d_rgbd_options_t> {
-        // SAFETY: o3d_rgbd_options_t is plain numbers and nullable pointers; o3d_rgbd_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_rgbd_options_init(p, n)) }?;
-        raw.depth_scale = self.depth_scale;
-        raw.depth_trunc = self.depth_trunc;
-        raw.convert_rgb_to_intensity = self.convert_rgb_to_intensity as i32;
-        Ok(raw)
+c_enum! {
+    /// The dataset layouts of [`RgbdImage::from_dataset_format`] (`O3D_RGBD_FORMAT_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum RgbdFormat("RGB-D format") {
+        /// Depth in mm, truncated at 4 m.
+        Redwood = sys::O3D_RGBD_FORMAT_REDWOOD,
+        /// Depth scale 5000, truncated at 4 m.
+        Tum = sys::O3D_RGBD_FORMAT_TUM,
+        /// SUN RGB-D: depth bits rotated right by 3, in mm, truncated at 7 m.
+        Sun = sys::O3D_RGBD_FORMAT_SUN,
+        /// NYU raw PGM disparity, truncated at 7 m.
+        Nyu = sys::O3D_RGBD_FORMAT_NYU,
     }
-}
-
-/// The dataset layouts of [`RgbdImage::from_dataset_format`] (`O3D_RGBD_FORMAT_*`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum RgbdFormat {
-    /// Depth in mm, truncated at 4 m.
-    Redwood,
-    /// Depth scale 5000, truncated at 4 m.
-    Tum,
-    /// SUN RGB-D: depth bits rotated right by 3, in mm, truncated at 7 m.
-    Sun,
-    /// NYU raw PGM disparity, truncated at 7 m.
-    Nyu,
 }
 
 handle! {
@@ -74,17 +62,11 @@ impl RgbdImage {
         depth: &Image,
         convert_rgb_to_intensity: bool,
     ) -> Result<RgbdImage> {
-        let raw_format = match format {
-            RgbdFormat::Redwood => sys::O3D_RGBD_FORMAT_REDWOOD,
-            RgbdFormat::Tum => sys::O3D_RGBD_FORMAT_TUM,
-            RgbdFormat::Sun => sys::O3D_RGBD_FORMAT_SUN,
-            RgbdFormat::Nyu => sys::O3D_RGBD_FORMAT_NYU,
-        };
         // SAFETY: valid handles.
         new_rgbd(|out| unsafe {
             sys::o3d_rgbd_image_create_from_dataset_format(
                 out,
-                raw_format,
+                format.raw(),
                 color.as_raw(),
                 depth.as_raw(),
                 convert_rgb_to_intensity as i32,
@@ -111,34 +93,19 @@ impl fmt::Debug for RgbdImage {
     }
 }
 
-/// PointCloud.create_from_depth_image keyword arguments (Open3D's defaults).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DepthToCloudOptions {
-    /// Raw units per metre for u16 depth (default 1000).
-    pub depth_scale: f64,
-    /// Farther depths are dropped, in metres (default 1000).
-    pub depth_trunc: f64,
-    /// Use every `stride`-th pixel in x and y (default 1).
-    pub stride: i32,
-    /// False: invalid pixels give NaN points (an organised cloud). Default true.
-    pub project_valid_depth_only: bool,
-}
-
-impl Default for DepthToCloudOptions {
-    fn default() -> Self {
-        DepthToCloudOptions { depth_scale: 1000.0, depth_trunc: 1000.0, stride: 1, project_valid_depth_only: true }
-    }
-}
-
-impl DepthToCloudOptions {
-    fn to_raw(self) -> Result<sys::o3d_depth_to_cloud_options_t> {
-        // SAFETY: o3d_depth_to_cloud_options_t is plain numbers and nullable pointers; o3d_depth_to_cloud_options_init is its init.
-        let mut raw = unsafe { init_struct(|p, n| sys::o3d_depth_to_cloud_options_init(p, n)) }?;
-        raw.depth_scale = self.depth_scale;
-        raw.depth_trunc = self.depth_trunc;
-        raw.stride = self.stride;
-        raw.project_valid_depth_only = self.project_valid_depth_only as i32;
-        Ok(raw)
+options! {
+    /// PointCloud.create_from_depth_image keyword arguments; `Default` is the library's
+    /// (`o3d_depth_to_cloud_options_init`, Open3D's).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct DepthToCloudOptions(sys::o3d_depth_to_cloud_options_t, sys::o3d_depth_to_cloud_options_init) {
+        /// Raw units per metre for u16 depth (default 1000).
+        pub depth_scale: f64 = depth_scale,
+        /// Farther depths are dropped, in metres (default 1000).
+        pub depth_trunc: f64 = depth_trunc,
+        /// Use every `stride`-th pixel in x and y (default 1).
+        pub stride: i32 = stride,
+        /// False: invalid pixels give NaN points (an organised cloud). Default true.
+        pub project_valid_depth_only: bool = project_valid_depth_only,
     }
 }
 

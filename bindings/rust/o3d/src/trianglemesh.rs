@@ -5,32 +5,23 @@ use std::fmt;
 
 use o3d_sys as sys;
 
+use crate::array::{impl_arrays, Family};
 use crate::error::{check, Result};
 use crate::image::{new_image, Image};
-use crate::array::{impl_arrays, Family};
-use crate::util::handle;
+use crate::util::{c_enum, handle};
 
-/// The float64 arrays of a mesh with three values per row.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum MeshArray {
-    /// N x 3 vertex positions.
-    Vertices,
-    /// N x 3 vertex normals.
-    VertexNormals,
-    /// N x 3 vertex colors, RGB in `[0, 1]`.
-    VertexColors,
-    /// M x 3 triangle normals.
-    TriangleNormals,
-}
-
-impl MeshArray {
-    fn raw(self) -> i32 {
-        match self {
-            MeshArray::Vertices => sys::O3D_MESH_VERTICES,
-            MeshArray::VertexNormals => sys::O3D_MESH_VERTEX_NORMALS,
-            MeshArray::VertexColors => sys::O3D_MESH_VERTEX_COLORS,
-            MeshArray::TriangleNormals => sys::O3D_MESH_TRIANGLE_NORMALS,
-        }
+c_enum! {
+    /// The float64 arrays of a mesh with three values per row (`O3D_MESH_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum MeshArray("mesh array") {
+        /// N x 3 vertex positions.
+        Vertices = sys::O3D_MESH_VERTICES,
+        /// N x 3 vertex normals.
+        VertexNormals = sys::O3D_MESH_VERTEX_NORMALS,
+        /// N x 3 vertex colors, RGB in `[0, 1]`.
+        VertexColors = sys::O3D_MESH_VERTEX_COLORS,
+        /// M x 3 triangle normals.
+        TriangleNormals = sys::O3D_MESH_TRIANGLE_NORMALS,
     }
 }
 

@@ -4,41 +4,34 @@ use o3d_sys as sys;
 use crate::error::{check, Result};
 use crate::pointcloud::{new_cloud, PointCloud};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
-use crate::util::{mat4_ptr, opt_ptr, to_i32};
+use crate::util::{c_enum, mat4_ptr, opt_ptr, to_i32};
 
-/// Which vertex attributes the smoothing filters touch (`O3D_FILTER_SCOPE_*`).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-pub enum FilterScope {
-    /// Positions, normals and colors.
-    #[default]
-    All,
-    /// Colors only.
-    Color,
-    /// Normals only.
-    Normal,
-    /// Positions only.
-    Vertex,
-}
-
-impl FilterScope {
-    fn raw(self) -> i32 {
-        match self {
-            FilterScope::All => sys::O3D_FILTER_SCOPE_ALL,
-            FilterScope::Color => sys::O3D_FILTER_SCOPE_COLOR,
-            FilterScope::Normal => sys::O3D_FILTER_SCOPE_NORMAL,
-            FilterScope::Vertex => sys::O3D_FILTER_SCOPE_VERTEX,
-        }
+c_enum! {
+    /// Which vertex attributes the smoothing filters touch (`O3D_FILTER_SCOPE_*`).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+    pub enum FilterScope("filter scope") {
+        /// Positions, normals and colors (Open3D's default).
+        #[default]
+        All = sys::O3D_FILTER_SCOPE_ALL,
+        /// Colors only.
+        Color = sys::O3D_FILTER_SCOPE_COLOR,
+        /// Normals only.
+        Normal = sys::O3D_FILTER_SCOPE_NORMAL,
+        /// Positions only.
+        Vertex = sys::O3D_FILTER_SCOPE_VERTEX,
     }
 }
 
-/// How vertex clustering places a cluster's vertex (`O3D_SIMPLIFICATION_*`).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-pub enum SimplificationContraction {
-    /// The mean of the cluster.
-    #[default]
-    Average,
-    /// The point minimising the quadric error.
-    Quadric,
+c_enum! {
+    /// How vertex clustering places a cluster's vertex (`O3D_SIMPLIFICATION_*`).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+    pub enum SimplificationContraction("contraction") {
+        /// The mean of the cluster (Open3D's default).
+        #[default]
+        Average = sys::O3D_SIMPLIFICATION_AVERAGE,
+        /// The point minimising the quadric error.
+        Quadric = sys::O3D_SIMPLIFICATION_QUADRIC,
+    }
 }
 
 /// Edge-connected triangle clusters ([`TriangleMesh::cluster_connected_triangles`]).
@@ -257,9 +250,15 @@ impl TriangleMesh {
         let (mut n_tri, mut n_clusters) = (0usize, 0usize);
         // SAFETY: three buffers of `cap` values each.
         check(unsafe {
-            sys::o3d_trianglemesh_cluster_connected_triangles(out.triangle_clusters.as_mut_ptr(),
-                out.cluster_n_triangles.as_mut_ptr(), out.cluster_area.as_mut_ptr(), cap, &mut n_tri, &mut n_clusters,
-                self.as_raw(), )
+            sys::o3d_trianglemesh_cluster_connected_triangles(
+                out.triangle_clusters.as_mut_ptr(),
+                out.cluster_n_triangles.as_mut_ptr(),
+                out.cluster_area.as_mut_ptr(),
+                cap,
+                &mut n_tri,
+                &mut n_clusters,
+                self.as_raw(),
+            )
         })?;
         out.triangle_clusters.truncate(n_tri.min(cap));
         out.cluster_n_triangles.truncate(n_clusters.min(cap));
@@ -315,10 +314,7 @@ impl TriangleMesh {
         voxel_size: f64,
         contraction: SimplificationContraction,
     ) -> Result<TriangleMesh> {
-        let raw = match contraction {
-            SimplificationContraction::Average => sys::O3D_SIMPLIFICATION_AVERAGE,
-            SimplificationContraction::Quadric => sys::O3D_SIMPLIFICATION_QUADRIC,
-        };
+        let raw = contraction.raw();
         // SAFETY: valid handle and out-pointer.
         new_mesh(|out| unsafe { sys::o3d_trianglemesh_simplify_vertex_clustering(out, self.as_raw(), voxel_size, raw) })
     }

@@ -125,3 +125,149 @@ macro_rules! handle {
     };
 }
 pub(crate) use handle;
+
+/// A Rust field of an options type and its C counterpart `C` (one C field, or a tuple of them).
+pub(crate) trait CField<C>: Sized {
+    /// The C value; `name` names the field in an error (e.g. a count too large for `int32_t`).
+    fn to_c(&self, name: &str) -> Result<C>;
+    /// The Rust value; an unknown enum constant is an `Internal` error.
+    fn from_c(c: C) -> Result<Self>;
+}
+
+/// `CField` impls from a table: Rust type => C type: to C (self, field name), from C (value).
+macro_rules! c_fields {
+    ($($(#[$doc:meta])* $rust:ty => $c:ty: |$s:ident, $name:pat_param| $to:expr, |$v:pat_param| $from:expr;)+) => {
+        $($(#[$doc])*
+        impl CField<$c> for $rust {
+            fn to_c(&self, $name: &str) -> Result<$c> {
+                let $s = *self;
+                $to
+            }
+            fn from_c($v: $c) -> Result<$rust> {
+                Ok($from)
+            }
+        })+
+    };
+}
+
+c_fields! {
+    f64 => f64: |s, _| Ok(s), |c| c;
+    i32 => i32: |s, _| Ok(s), |c| c;
+    /// C flags: non-zero is true.
+    bool => i32: |s, _| Ok(s as i32), |c| c != 0;
+    /// Counts: `int32_t` in C, checked on the way in.
+    usize => i32: |s, name| to_i32(s, name), |c| c.max(0) as usize;
+    /// An optional index: a negative `int32_t` is `None`.
+    Option<usize> => i32: |s, name| s.map_or(Ok(-1), |n| to_i32(n, name)), |c| usize::try_from(c).ok();
+    /// An optional seed: the pair (`use_seed`, `seed`).
+    Option<u64> => (i32, u64): |s, _| Ok((s.is_some() as i32, s.unwrap_or(0))), |(use_seed, seed)| (use_seed != 0).then_some(seed);
+}
+
+/// A row-major R x R matrix as the C API's `R * R` contiguous doubles (`N` must be `R * R`).
+impl<const R: usize, const N: usize> CField<[f64; N]> for [[f64; R]; R] {
+    fn to_c(&self, _: &str) -> Result<[f64; N]> {
+        let mut out = [0.0; N];
+        for (chunk, row) in out.chunks_exact_mut(R).zip(self) {
+            chunk.copy_from_slice(row);
+        }
+        Ok(out)
+    }
+    fn from_c(c: [f64; N]) -> Result<Self> {
+        let mut m = [[0.0; R]; R];
+        for (row, chunk) in m.iter_mut().zip(c.chunks_exact(R)) {
+            row.copy_from_slice(chunk);
+        }
+        Ok(m)
+    }
+}
+
+/// The C field(s) named in an [`options!`] line: `field` or `(field, field, ...)`.
+macro_rules! c_place {
+    ($raw:ident ($($c:ident),+)) => { ($($raw.$c),+) };
+    ($raw:ident $c:ident) => { $raw.$c };
+}
+pub(crate) use c_place;
+
+/// An options type over a versioned C struct: the struct with its documented public fields, each
+/// mapped to C field(s) through [`CField`]; `Default` and `library_defaults` are what the C
+/// `*_init` function writes; crate-private `raw_default` / `to_raw` (the init's struct with the
+/// fields set) / `from_raw`.
+macro_rules! options {
+    ($(#[$doc:meta])* pub struct $name:ident($raw:ty, $init:path) {
+        $($(#[$fdoc:meta])* pub $field:ident: $ty:ty = $c:tt,)+
+    }) => {
+        $(#[$doc])*
+        pub struct $name {
+            $($(#[$fdoc])* pub $field: $ty,)+
+        }
+
+        impl Default for $name {
+            /// The library's defaults (see `library_defaults`); panics only if the library rejects
+            /// its own struct (a mismatched libo3d).
+            fn default() -> Self {
+                Self::library_defaults().unwrap_or_else(|e| panic!("{} failed: {e}", stringify!($init)))
+            }
+        }
+
+        impl $name {
+            #[doc = concat!("The library's defaults (`", stringify!($init), "`), as `Default` but an error where it fails.")]
+            pub fn library_defaults() -> crate::Result<Self> {
+                Self::from_raw(&Self::raw_default()?)
+            }
+
+            #[allow(dead_code)]
+            pub(crate) fn raw_default() -> crate::Result<$raw> {
+                // SAFETY: options structs are plain numbers and nullable pointers; $init is its init.
+                unsafe { crate::util::init_struct(|p, n| $init(p, n)) }
+            }
+
+            #[allow(dead_code)]
+            pub(crate) fn to_raw(self) -> crate::Result<$raw> {
+                let mut raw = Self::raw_default()?;
+                $(crate::util::c_place!(raw $c) = crate::util::CField::to_c(&self.$field, stringify!($field))?;)+
+                Ok(raw)
+            }
+
+            pub(crate) fn from_raw(raw: &$raw) -> crate::Result<Self> {
+                Ok($name { $($field: crate::util::CField::from_c(crate::util::c_place!(raw $c))?,)+ })
+            }
+        }
+    };
+}
+pub(crate) use options;
+
+/// A Rust enum over C constants: each variant's discriminant is its `O3D_*` constant; crate-private
+/// `raw` / `from_raw` (an unknown constant is an `Internal` error) and the [`CField`] mapping.
+macro_rules! c_enum {
+    ($(#[$doc:meta])* pub enum $name:ident($what:literal) { $($(#[$vdoc:meta])* $variant:ident = $c:path,)+ }) => {
+        $(#[$doc])*
+        #[repr(i32)]
+        pub enum $name {
+            $($(#[$vdoc])* $variant = $c,)+
+        }
+
+        #[allow(dead_code)]
+        impl $name {
+            pub(crate) fn raw(self) -> i32 {
+                self as i32
+            }
+
+            pub(crate) fn from_raw(raw: i32) -> crate::Result<Self> {
+                $(if raw == $c {
+                    return Ok($name::$variant);
+                })+
+                Err(crate::Error::new(crate::ErrorCode::Internal, format!("unknown {} {raw}", $what)))
+            }
+        }
+
+        impl crate::util::CField<i32> for $name {
+            fn to_c(&self, _: &str) -> crate::Result<i32> {
+                Ok(self.raw())
+            }
+            fn from_c(c: i32) -> crate::Result<Self> {
+                Self::from_raw(c)
+            }
+        }
+    };
+}
+pub(crate) use c_enum;

@@ -118,8 +118,14 @@ impl VoxelGrid {
         let (mut out, mut n) = (vec![0i32; queries.len()], 0);
         // SAFETY: queries.len() rows of 3 doubles; room for one int per query.
         check(unsafe {
-            sys::o3d_voxelgrid_check_if_included(out.as_mut_ptr(), out.len(), &mut n, self.as_raw(),
-                queries.as_ptr().cast(), queries.len())
+            sys::o3d_voxelgrid_check_if_included(
+                out.as_mut_ptr(),
+                out.len(),
+                &mut n,
+                self.as_raw(),
+                queries.as_ptr().cast(),
+                queries.len(),
+            )
         })?;
         out.truncate(n);
         Ok(out.into_iter().map(|v| v != 0).collect())

@@ -54,7 +54,7 @@ fn nodes_and_edges_can_be_added_read_replaced_and_cleared() {
     assert_eq!((copy.num_nodes(), copy.num_edges()), (2, 1));
     assert_eq!(copy.edge(0).unwrap(), replaced);
 
-    assert_eq!(PoseGraphEdge::library_default().unwrap(), PoseGraphEdge::default());
+    assert_eq!(PoseGraphEdge::library_defaults().unwrap(), PoseGraphEdge::default());
     assert_eq!(GlobalOptimizationOptions::library_defaults().unwrap(), GlobalOptimizationOptions::default());
 }
 

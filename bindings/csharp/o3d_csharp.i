@@ -1,117 +1,138 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * C#-only typemaps for bindings/swig/o3d.i (included from there; never processed alone).
- * Defines the abstract typemap names the shared interface applies, and O3D_SWIG_RAISE.
+ * C#-only typemaps for bindings/swig/o3d.i (included from there). Arrays are pinned (GCHandle),
+ * never copied in; results are copied once (O3dx.cs). Errors reach O3dException through one
+ * registered managed callback; callbacks run through static trampolines + GCHandle user_data
+ * (no directors: IL2CPP-compatible).
  */
-
-%include <arrays_csharp.i>
-%include <typemaps.i>
-
-/* SWIG 4.1 maps size_t to a 32-bit uint in C#; o3d counts are 64-bit. */
-%apply unsigned long long { size_t };
-/* SWIG runs with -DSWIGWORDSIZE64 (int64_t = C long), and C# maps C long to 32 bits: be explicit. */
-%apply unsigned long long { uint64_t };
-%apply long long { int64_t };
-/* #define constants as C# compile-time constants. */
 %csconst(1);
+%typemap(csinterfaces) SWIGTYPE "global::System.IDisposable"
 
-/* The raw module class is not public: the hand-written O3d.* classes are the API. */
-%pragma(csharp) moduleclassmodifiers="internal class"
-%typemap(csclassmodifiers) SWIGTYPE "internal class"
+%{
+typedef struct { const void *p; int64_t n; } o3dx_span;
+typedef struct { void *p; int64_t n; int32_t owned; } o3dx_ospan;
+static const o3dx_ospan o3dx_ospan_null;
+SWIGEXPORT void SWIGSTDCALL o3dx_free(void *p) { free(p); }
+#define o3dx_struct_free_plain(s, _) free(s)
+#define o3dx_struct_free_progress(s, _) free(s) /* the managed side frees its GCHandle */
+%}
 
-/* ---- arrays: one managed array per call (blittable: pinned by the marshaller, no copy) ------ */
-%define O3D_CS_ARRAY(CTYPE, BASE)
-%apply BASE INPUT[] { const CTYPE *O3D_IN }
-%apply BASE OUTPUT[] { CTYPE *O3D_OUT }
+/* ---- arrays in: pinned managed arrays ------------------------------------------------------- */
+%define O3DX_CS_IN(E, CSTYPE)
+%typemap(ctype) o3dx_in_##E "o3dx_span"
+%typemap(imtype) o3dx_in_##E "O3dx.Span"
+%typemap(cstype) o3dx_in_##E "CSTYPE[]"
+%typemap(csin, pre="    var pin_$csinput = O3dx.Pin($csinput);", post="      pin_$csinput.Free();")
+  o3dx_in_##E "O3dx.SpanOf(pin_$csinput, $csinput)"
+%typemap(in) o3dx_in_##E %{ $1.p = $input.p; $1.n = (size_t)$input.n; %}
 %enddef
-O3D_CS_ARRAY(double, double)
-O3D_CS_ARRAY(float, float)
-O3D_CS_ARRAY(int32_t, int)
-/* int64_t: explicit (arrays_csharp.i maps C `long` to a 32-bit C# int; SWIG runs with -DSWIGWORDSIZE64) */
-%typemap(ctype) int64_t *O3D_OUT "int64_t *"
-%typemap(imtype, inattributes="[global::System.Runtime.InteropServices.Out, global::System.Runtime.InteropServices.MarshalAs(global::System.Runtime.InteropServices.UnmanagedType.LPArray)]") int64_t *O3D_OUT "long[]"
-%typemap(cstype) int64_t *O3D_OUT "long[]"
-%typemap(in) int64_t *O3D_OUT %{ $1 = ($1_ltype)$input; %}
-%typemap(csin) int64_t *O3D_OUT "$csinput"
-%typemap(ctype) const int64_t *O3D_IN "const int64_t *"
-%typemap(imtype, inattributes="[global::System.Runtime.InteropServices.In, global::System.Runtime.InteropServices.MarshalAs(global::System.Runtime.InteropServices.UnmanagedType.LPArray)]") const int64_t *O3D_IN "long[]"
-%typemap(cstype) const int64_t *O3D_IN "long[]"
-%typemap(in) const int64_t *O3D_IN %{ $1 = ($1_ltype)$input; %}
-%typemap(csin) const int64_t *O3D_IN "$csinput"
-O3D_CS_ARRAY(uint8_t, unsigned char)
+O3DX_CS_IN(f64, double)
+O3DX_CS_IN(f32, float)
+O3DX_CS_IN(i32, int)
+O3DX_CS_IN(i64, long)
+O3DX_CS_IN(u8, byte)
+/* correspondence checkers: an array of proxies, copied into one contiguous C array */
+%typemap(ctype) o3dx_in_o3d_correspondence_checker_t "o3dx_span"
+%typemap(imtype) o3dx_in_o3d_correspondence_checker_t "O3dx.Span"
+%typemap(cstype) o3dx_in_o3d_correspondence_checker_t "CorrespondenceChecker[]"
+%typemap(csin, pre="    var pin_$csinput = O3dx.Pin($csinput == null ? null : global::System.Array.ConvertAll($csinput, c => CorrespondenceChecker.getCPtr(c).Handle));",
+  post="      pin_$csinput.Free();") o3dx_in_o3d_correspondence_checker_t "O3dx.SpanOf(pin_$csinput, $csinput)"
+%typemap(in) o3dx_in_o3d_correspondence_checker_t (o3d_correspondence_checker_t *tmp = NULL) %{
+  $1.n = (size_t)$input.n;
+  if ($1.n) {
+    size_t i;
+    tmp = (o3d_correspondence_checker_t *)malloc($1.n * sizeof *tmp);
+    for (i = 0; tmp && i < $1.n; ++i) tmp[i] = *((o3d_correspondence_checker_t *const *)$input.p)[i];
+  }
+  $1.p = tmp;
+%}
+%typemap(freearg) o3dx_in_o3d_correspondence_checker_t %{ free(tmp$argnum); %}
 
-/* ---- scalar outputs: `out T` --------------------------------------------------------------- */
-%apply unsigned long long *OUTPUT { size_t *O3D_SOUT }
-%apply int *OUTPUT { int32_t *O3D_SOUT }
-%apply double *OUTPUT { double *O3D_SOUT }
-
-/* ---- raw pointers (handles, void*, function pointers): IntPtr ------------------------------ */
-%typemap(ctype) SWIGTYPE *O3D_PTR "void *"
-%typemap(imtype) SWIGTYPE *O3D_PTR "global::System.IntPtr"
-%typemap(cstype) SWIGTYPE *O3D_PTR "global::System.IntPtr"
-%typemap(in) SWIGTYPE *O3D_PTR %{ $1 = ($1_ltype)$input; %}
-%typemap(out) SWIGTYPE *O3D_PTR %{ $result = (void *)$1; %}
-%typemap(csin) SWIGTYPE *O3D_PTR "$csinput"
-%typemap(csout, excode=SWIGEXCODE) SWIGTYPE *O3D_PTR {
-    global::System.IntPtr ret = $imcall;$excode
+/* ---- arrays out: one copy into a new managed array ------------------------------------------ */
+%define O3DX_CS_OUT(E, CSTYPE)
+%typemap(ctype) o3dx_out_##E "o3dx_ospan"
+%typemap(imtype) o3dx_out_##E "O3dx.OutSpan"
+%typemap(cstype) o3dx_out_##E "CSTYPE[]"
+%typemap(out, null="o3dx_ospan_null") o3dx_out_##E %{ $result.p = $1.p; $result.n = (int64_t)$1.n; $result.owned = $1.owned; %}
+%typemap(csout, excode=SWIGEXCODE) o3dx_out_##E {
+    var span = $imcall;
+    var ret = O3dx.Take(span, new CSTYPE[span.p == global::System.IntPtr.Zero ? 0 : span.n]);$excode
     return ret;
   }
-%typemap(csvarin, excode=SWIGEXCODE2) SWIGTYPE *O3D_PTR %{
-    set {
-      $imcall;$excode
-    } %}
-%typemap(csvarout, excode=SWIGEXCODE2) SWIGTYPE *O3D_PTR %{
-    get {
-      global::System.IntPtr ret = $imcall;$excode
-      return ret;
-    } %}
+%enddef
+O3DX_CS_OUT(f64, double)
+O3DX_CS_OUT(i32, int)
+O3DX_CS_OUT(i64, long)
+O3DX_CS_OUT(u8, byte)
 
-/* ---- pointer outputs (`T** out`: owned handles and borrowed views): out IntPtr ------------- */
-%typemap(ctype) SWIGTYPE **O3D_PTROUT "void **"
-%typemap(imtype) SWIGTYPE **O3D_PTROUT "out global::System.IntPtr"
-%typemap(cstype) SWIGTYPE **O3D_PTROUT "out global::System.IntPtr"
-%typemap(in) SWIGTYPE **O3D_PTROUT %{ $1 = ($1_ltype)$input; if ($1) *$1 = 0; %}
-%typemap(csin) SWIGTYPE **O3D_PTROUT "out $csinput"
+/* raw pointers (callback trampolines, user_data) */
+%typemap(ctype) void * "void *"
+%typemap(imtype) void * "global::System.IntPtr"
+%typemap(cstype) void * "global::System.IntPtr"
+%typemap(in) void * %{ $1 = $input; %}
+%typemap(csin) void * "$csinput"
 
-/* ---- errors: status -> O3d.O3dException via a registered managed callback ------------------ */
-%typemap(csout, excode=SWIGEXCODE) o3d_status {
-    int ret = $imcall;$excode
-    return ret;
-  }
-
+/* ---- errors --------------------------------------------------------------------------------- */
 %insert(runtime) %{
 typedef void (SWIGSTDCALL *o3dcs_raise_callback)(int status, const char *message);
 static o3dcs_raise_callback o3dcs_raise = 0;
-#ifdef __cplusplus
-extern "C"
-#endif
-SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback callback) {
-  o3dcs_raise = callback;
-}
-#define O3D_SWIG_RAISE(status, message) \
-  do { if (o3dcs_raise) o3dcs_raise((int)(status), (message)); } while (0)
+SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback callback) { o3dcs_raise = callback; }
+#define O3D_SWIG_RAISE(status, message) do { if (o3dcs_raise) o3dcs_raise((int)(status), (message)); } while (0)
 %}
-
 %pragma(csharp) imclasscode=%{
   internal class O3dExceptionHelper {
     [global::System.Runtime.InteropServices.UnmanagedFunctionPointer(global::System.Runtime.InteropServices.CallingConvention.Cdecl)]
-    public delegate void RaiseDelegate(int status,
-        [global::System.Runtime.InteropServices.MarshalAs(global::System.Runtime.InteropServices.UnmanagedType.LPStr)] string message);
-
-    // Kept in a static field: the native side holds a pointer to it for the process lifetime.
-    static RaiseDelegate raiseDelegate = new RaiseDelegate(Raise);
-
+    public delegate void RaiseDelegate(int status, [global::System.Runtime.InteropServices.MarshalAs(global::System.Runtime.InteropServices.UnmanagedType.LPStr)] string message);
+    static RaiseDelegate raiseDelegate = new RaiseDelegate(Raise); // the native side keeps a pointer to it
     [global::System.Runtime.InteropServices.DllImport("$dllimport", EntryPoint="O3dCsRegisterExceptionCallback")]
     public static extern void O3dCsRegisterExceptionCallback(RaiseDelegate callback);
-
     [O3d.MonoPInvokeCallback(typeof(RaiseDelegate))]
     static void Raise(int status, string message) {
-      SWIGPendingException.Set(new O3d.O3dException(status, message));
+      SWIGPendingException.Set(status == -1000 ? (global::System.Exception)new global::System.ObjectDisposedException(message)
+                                               : new O3d.O3dException(status, message));
     }
-
-    static O3dExceptionHelper() {
-      O3dCsRegisterExceptionCallback(raiseDelegate);
-    }
+    static O3dExceptionHelper() { O3dCsRegisterExceptionCallback(raiseDelegate); }
   }
   static O3dExceptionHelper o3dExceptionHelper = new O3dExceptionHelper();
+%}
+
+/* ---- callbacks: progress (options structs) and log ------------------------------------------ */
+%define O3DX_PROGRESS(T)
+%extend T { void set_progress_native(void *fn, void *user_data) { $self->progress = (o3d_progress_callback)fn; $self->user_data = user_data; } }
+%csmethodmodifiers T::set_progress_native "internal";
+%typemap(cscode) T %{
+  global::System.Runtime.InteropServices.GCHandle progressHandle;
+  /// <summary>Called with the fraction done; return false to cancel (the call throws O3dException CANCELLED).</summary>
+  public void SetProgress(global::System.Func<double, bool> progress) {
+    global::System.Runtime.InteropServices.GCHandle old = progressHandle;
+    progressHandle = progress == null ? default(global::System.Runtime.InteropServices.GCHandle) : global::System.Runtime.InteropServices.GCHandle.Alloc(progress);
+    SetProgressNative(progress == null ? global::System.IntPtr.Zero : O3dx.ProgressTrampoline,
+                      progress == null ? global::System.IntPtr.Zero : global::System.Runtime.InteropServices.GCHandle.ToIntPtr(progressHandle));
+    if (old.IsAllocated) old.Free();
+  }
+%}
+%typemap(csdisposing, methodname="Dispose", methodmodifiers="protected", parameters="bool disposing") T {
+    lock(this) {
+      if (swigCPtr.Handle != global::System.IntPtr.Zero) {
+        if (swigCMemOwn) {
+          swigCMemOwn = false;
+          $imcall;
+        }
+        swigCPtr = new global::System.Runtime.InteropServices.HandleRef(null, global::System.IntPtr.Zero);
+      }
+      if (progressHandle.IsAllocated) progressHandle.Free();
+    }
+  }
+%enddef
+
+%inline %{
+static void set_log_callback_native(void *fn) { o3d_set_log_callback((o3d_log_callback)fn, NULL); }
+%}
+%csmethodmodifiers set_log_callback_native "internal";
+%pragma(csharp) modulecode=%{
+  /// <summary>Send o3d's log lines to <paramref name="handler"/> (level, message); null restores stderr.</summary>
+  public static void SetLogHandler(global::System.Action<int, string> handler) {
+    O3dx.LogHandler = handler;
+    SetLogCallbackNative(handler == null ? global::System.IntPtr.Zero : O3dx.LogTrampoline);
+  }
 %}

@@ -1,118 +1,22 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Java-only typemaps for bindings/swig/o3d.i (included from there; never processed alone).
- * Defines the abstract typemap names the shared interface applies, O3D_SWIG_RAISE, and a few
- * JNI helpers (direct ByteBuffer views, callback trampolines, global references).
- * The generated wrapper is compiled as C.
+ * Java-only typemaps for bindings/swig/o3d.i (included from there). Arrays are pinned or copied
+ * once by JNI; results are copied once into new Java arrays. Every proxy is AutoCloseable
+ * (close() == delete(), idempotent). Errors throw org.o3d.O3dException; callbacks go through
+ * static C trampolines with a JNI global reference as user_data (no directors).
  */
-
-/* The raw classes are package-private: org.o3d's hand-written classes are the API. */
-%pragma(java) moduleclassmodifiers="final class"
-%pragma(java) jniclassclassmodifiers="final class"
-%typemap(javaclassmodifiers) SWIGTYPE "final class"
-/* #define constants as Java compile-time constants. */
 %javaconst(1);
-/* No finalizers on the option-struct proxies: the hand-written layer deletes them in finally. */
-%typemap(javafinalize) SWIGTYPE ""
-/* Load libo3d_java before any native method runs (see NativeLoader.java for the search order). */
 %pragma(java) jniclasscode=%{
-  static {
-    NativeLoader.load();
-  }
+  static { NativeLoader.load(); }
 %}
-
-/* ---- arrays: one Java array per call, pinned/copied once; NULL allowed ---------------------- */
-%define O3D_JAVA_ARRAY(CTYPE, JNITYPE, JTYPE, JARRAY, GET, RELEASE)
-%typemap(jni) const CTYPE *O3D_IN, CTYPE *O3D_OUT "JARRAY"
-%typemap(jtype) const CTYPE *O3D_IN, CTYPE *O3D_OUT "JTYPE[]"
-%typemap(jstype) const CTYPE *O3D_IN, CTYPE *O3D_OUT "JTYPE[]"
-%typemap(javain) const CTYPE *O3D_IN, CTYPE *O3D_OUT "$javainput"
-%typemap(in) const CTYPE *O3D_IN, CTYPE *O3D_OUT %{
-  $1 = $input ? ($1_ltype)(*jenv)->GET(jenv, $input, 0) : NULL;
-  if ($input && !$1) return $null; /* OutOfMemoryError pending */
+%typemap(javainterfaces) SWIGTYPE "AutoCloseable"
+%typemap(javacode) SWIGTYPE %{
+  /** Frees the native object now (idempotent); later calls throw IllegalStateException. */
+  @Override public void close() { delete(); }
 %}
-/* input: never copied back */
-%typemap(freearg) const CTYPE *O3D_IN %{ if ($1) (*jenv)->RELEASE(jenv, $input, (JNITYPE *)$1, JNI_ABORT); %}
-/* output: copied back after the call (also on failure; harmless) */
-%typemap(freearg) CTYPE *O3D_OUT %{ if ($1) (*jenv)->RELEASE(jenv, $input, (JNITYPE *)$1, 0); %}
-%enddef
-O3D_JAVA_ARRAY(double, jdouble, double, jdoubleArray, GetDoubleArrayElements, ReleaseDoubleArrayElements)
-O3D_JAVA_ARRAY(float, jfloat, float, jfloatArray, GetFloatArrayElements, ReleaseFloatArrayElements)
-O3D_JAVA_ARRAY(int32_t, jint, int, jintArray, GetIntArrayElements, ReleaseIntArrayElements)
-O3D_JAVA_ARRAY(int64_t, jlong, long, jlongArray, GetLongArrayElements, ReleaseLongArrayElements)
-O3D_JAVA_ARRAY(uint8_t, jbyte, byte, jbyteArray, GetByteArrayElements, ReleaseByteArrayElements)
-
-/* ---- scalar outputs: T[] of length >= 1 ----------------------------------------------------- */
-%define O3D_JAVA_SCALAR_OUT(CTYPE, JNITYPE, JTYPE, JARRAY, SET)
-%typemap(jni) CTYPE *O3D_SOUT "JARRAY"
-%typemap(jtype) CTYPE *O3D_SOUT "JTYPE[]"
-%typemap(jstype) CTYPE *O3D_SOUT "JTYPE[]"
-%typemap(javain) CTYPE *O3D_SOUT "$javainput"
-%typemap(in) CTYPE *O3D_SOUT (CTYPE temp = 0) %{
-  if (!$input || (*jenv)->GetArrayLength(jenv, $input) < 1) {
-    SWIG_JavaThrowException(jenv, SWIG_JavaIllegalArgumentException, "output array of length >= 1 expected");
-    return $null;
-  }
-  $1 = &temp;
-%}
-%typemap(argout) CTYPE *O3D_SOUT %{ { JNITYPE v = (JNITYPE)temp$argnum; (*jenv)->SET(jenv, $input, 0, 1, &v); } %}
-%enddef
-O3D_JAVA_SCALAR_OUT(size_t, jlong, long, jlongArray, SetLongArrayRegion)
-O3D_JAVA_SCALAR_OUT(int32_t, jint, int, jintArray, SetIntArrayRegion)
-O3D_JAVA_SCALAR_OUT(double, jdouble, double, jdoubleArray, SetDoubleArrayRegion)
-
-/* ---- raw pointers (handles, void*, function pointers): long --------------------------------- */
-%typemap(jni) SWIGTYPE *O3D_PTR "jlong"
-%typemap(jtype) SWIGTYPE *O3D_PTR "long"
-%typemap(jstype) SWIGTYPE *O3D_PTR "long"
-%typemap(in) SWIGTYPE *O3D_PTR %{ $1 = ($1_ltype)(intptr_t)$input; %}
-%typemap(out) SWIGTYPE *O3D_PTR %{ $result = (jlong)(intptr_t)$1; %}
-%typemap(javain) SWIGTYPE *O3D_PTR "$javainput"
-%typemap(javaout) SWIGTYPE *O3D_PTR { return $jnicall; }
-
-/* ---- pointer outputs (`T** out`: owned handles and borrowed views): long[1] ----------------- */
-%typemap(jni) SWIGTYPE **O3D_PTROUT "jlongArray"
-%typemap(jtype) SWIGTYPE **O3D_PTROUT "long[]"
-%typemap(jstype) SWIGTYPE **O3D_PTROUT "long[]"
-%typemap(javain) SWIGTYPE **O3D_PTROUT "$javainput"
-%typemap(in) SWIGTYPE **O3D_PTROUT ($*1_ltype temp = 0) %{
-  if (!$input || (*jenv)->GetArrayLength(jenv, $input) < 1) {
-    SWIG_JavaThrowException(jenv, SWIG_JavaIllegalArgumentException, "output array of length >= 1 expected");
-    return $null;
-  }
-  $1 = &temp;
-%}
-%typemap(argout) SWIGTYPE **O3D_PTROUT %{ { jlong v = (jlong)(intptr_t)temp$argnum; (*jenv)->SetLongArrayRegion(jenv, $input, 0, 1, &v); } %}
-
-/* ---- errors: status -> org.o3d.O3dException(status, message) -------------------------------- */
-%{
-static void o3dj_raise(JNIEnv *jenv, int status, const char *message) {
-  jclass cls;
-  jmethodID ctor;
-  jstring msg;
-  jobject ex;
-  if ((*jenv)->ExceptionCheck(jenv)) return; /* keep the first exception */
-  cls = (*jenv)->FindClass(jenv, "org/o3d/O3dException");
-  if (!cls) return; /* NoClassDefFoundError pending */
-  ctor = (*jenv)->GetMethodID(jenv, cls, "<init>", "(ILjava/lang/String;)V");
-  if (!ctor) return;
-  msg = (*jenv)->NewStringUTF(jenv, message ? message : "");
-  ex = (*jenv)->NewObject(jenv, cls, ctor, (jint)status, msg);
-  if (ex) (*jenv)->Throw(jenv, (jthrowable)ex);
-}
-#define O3D_SWIG_RAISE(status, message) o3dj_raise(jenv, (int)(status), (message))
-%}
-
-/* ---- JNI helpers (not part of the C API; used by the hand-written layer) -------------------- */
-%typemap(in, numinputs=0) JNIEnv *jenv_ %{ $1 = jenv; %}
-%typemap(jstype) jobject o3dj_direct_buffer "java.nio.ByteBuffer"
-%typemap(javaout) jobject o3dj_direct_buffer { return (java.nio.ByteBuffer)$jnicall; }
 
 %{
 static JavaVM *o3dj_vm = 0;
-static jclass o3dj_log_class = 0;
-static jmethodID o3dj_log_method = 0;
-
 static JNIEnv *o3dj_env(int *attached) {
   JNIEnv *env = 0;
   *attached = 0;
@@ -122,24 +26,97 @@ static JNIEnv *o3dj_env(int *attached) {
   *attached = 1;
   return env;
 }
-
-/* o3d_log_callback -> static org.o3d.Log.dispatch(int level, String message). */
-static void o3dj_log_trampoline(int32_t level, const char *message, void *user_data) {
+static void o3dj_release(void *ref) {
   int attached;
-  JNIEnv *env = o3dj_env(&attached);
-  jstring s;
-  (void)user_data;
-  if (!env || !o3dj_log_class) return;
-  s = (*env)->NewStringUTF(env, message ? message : "");
-  if (s) (*env)->CallStaticVoidMethod(env, o3dj_log_class, o3dj_log_method, (jint)level, s);
-  if ((*env)->ExceptionCheck(env)) (*env)->ExceptionClear(env); /* a listener must not throw */
-  if (s) (*env)->DeleteLocalRef(env, s);
+  JNIEnv *env = ref ? o3dj_env(&attached) : 0;
+  if (!env) return;
+  (*env)->DeleteGlobalRef(env, (jobject)ref);
   if (attached) (*o3dj_vm)->DetachCurrentThread(o3dj_vm);
 }
+#define o3dx_struct_free_plain(s, _) free(s)
+#define o3dx_struct_free_progress(s, _) do { o3dj_release((s)->user_data); free(s); } while (0)
+%}
 
-/* o3d_progress_callback -> user_data (a global ref to an org.o3d.ProgressCallback).onProgress(fraction).
- * Returns true to go on; false (or a thrown exception, which is cleared) cancels. */
-static int32_t o3dj_progress_trampoline(double fraction, void *user_data) {
+/* ---- arrays in / out ------------------------------------------------------------------------ */
+%define O3DX_JAVA_ARRAY(E, CTYPE, JNITYPE, JTYPE, JARRAY, NAME)
+%typemap(jni) o3dx_in_##E, o3dx_out_##E "JARRAY"
+%typemap(jtype) o3dx_in_##E, o3dx_out_##E "JTYPE[]"
+%typemap(jstype) o3dx_in_##E, o3dx_out_##E "JTYPE[]"
+%typemap(javain) o3dx_in_##E "$javainput"
+%typemap(javaout) o3dx_out_##E { return $jnicall; }
+%typemap(in) o3dx_in_##E %{
+  $1.p = $input ? (const CTYPE *)(*jenv)->Get##NAME##ArrayElements(jenv, $input, 0) : NULL;
+  $1.n = $input ? (size_t)(*jenv)->GetArrayLength(jenv, $input) : 0;
+  if ($input && !$1.p) return $null;
+%}
+%typemap(freearg) o3dx_in_##E %{ if ($1.p) (*jenv)->Release##NAME##ArrayElements(jenv, $input, (JNITYPE *)$1.p, JNI_ABORT); %}
+%typemap(out) o3dx_out_##E %{
+  $result = 0;
+  if ($1.p) {
+    $result = (*jenv)->New##NAME##Array(jenv, (jsize)$1.n);
+    if ($result) (*jenv)->Set##NAME##ArrayRegion(jenv, $result, 0, (jsize)$1.n, (const JNITYPE *)$1.p);
+    if ($1.owned) free($1.p);
+  }
+%}
+%enddef
+O3DX_JAVA_ARRAY(f64, double, jdouble, double, jdoubleArray, Double)
+O3DX_JAVA_ARRAY(f32, float, jfloat, float, jfloatArray, Float)
+O3DX_JAVA_ARRAY(i32, int32_t, jint, int, jintArray, Int)
+O3DX_JAVA_ARRAY(i64, int64_t, jlong, long, jlongArray, Long)
+O3DX_JAVA_ARRAY(u8, uint8_t, jbyte, byte, jbyteArray, Byte)
+
+/* correspondence checkers: CorrespondenceChecker[] -> one contiguous C array */
+%typemap(jni) o3dx_in_o3d_correspondence_checker_t "jlongArray"
+%typemap(jtype) o3dx_in_o3d_correspondence_checker_t "long[]"
+%typemap(jstype) o3dx_in_o3d_correspondence_checker_t "CorrespondenceChecker[]"
+%typemap(javain) o3dx_in_o3d_correspondence_checker_t
+  "$javainput == null ? null : java.util.Arrays.stream($javainput).mapToLong(CorrespondenceChecker::getCPtr).toArray()"
+%typemap(in) o3dx_in_o3d_correspondence_checker_t (o3d_correspondence_checker_t *tmp = NULL) %{
+  $1.n = $input ? (size_t)(*jenv)->GetArrayLength(jenv, $input) : 0;
+  if ($1.n) {
+    size_t i;
+    jlong *ptrs = (*jenv)->GetLongArrayElements(jenv, $input, 0);
+    tmp = (o3d_correspondence_checker_t *)malloc($1.n * sizeof *tmp);
+    for (i = 0; tmp && ptrs && i < $1.n; ++i) tmp[i] = *(o3d_correspondence_checker_t *)(intptr_t)ptrs[i];
+    if (ptrs) (*jenv)->ReleaseLongArrayElements(jenv, $input, ptrs, JNI_ABORT);
+  }
+  $1.p = tmp;
+%}
+%typemap(freearg) o3dx_in_o3d_correspondence_checker_t %{ free(tmp$argnum); %}
+
+/* ---- errors: O3dException(status, message); a closed object: IllegalStateException ---------- */
+%{
+static void o3dj_raise(JNIEnv *jenv, int status, const char *message) {
+  jclass cls;
+  jmethodID ctor;
+  jobject ex;
+  if ((*jenv)->ExceptionCheck(jenv)) return; /* keep the first exception */
+  if (status == O3DX_DISPOSED) {
+    cls = (*jenv)->FindClass(jenv, "java/lang/IllegalStateException");
+    if (cls) (*jenv)->ThrowNew(jenv, cls, message);
+    return;
+  }
+  cls = (*jenv)->FindClass(jenv, "org/o3d/O3dException");
+  ctor = cls ? (*jenv)->GetMethodID(jenv, cls, "<init>", "(ILjava/lang/String;)V") : 0;
+  ex = ctor ? (*jenv)->NewObject(jenv, cls, ctor, (jint)status, (*jenv)->NewStringUTF(jenv, message ? message : "")) : 0;
+  if (ex) (*jenv)->Throw(jenv, (jthrowable)ex);
+}
+#define O3D_SWIG_RAISE(status, message) o3dj_raise(jenv, (int)(status), (message))
+%}
+
+/* ---- callbacks ------------------------------------------------------------------------------ */
+%typemap(in, numinputs=0) JNIEnv *jenv_ %{ $1 = jenv; %}
+%typemap(jni) jobject progress "jobject"
+%typemap(jtype) jobject progress "Object"
+%typemap(jstype) jobject progress "ProgressCallback"
+%typemap(javain) jobject progress "$javainput"
+%typemap(jni) jobject handler "jobject"
+%typemap(jtype) jobject handler "Object"
+%typemap(jstype) jobject handler "java.util.function.BiConsumer<Integer, String>"
+%typemap(javain) jobject handler "$javainput"
+%{
+/* o3d_progress_callback -> ((ProgressCallback)user_data).onProgress(fraction); false or a throw cancels. */
+static int32_t o3dj_progress(double fraction, void *user_data) {
   int attached;
   JNIEnv *env = o3dj_env(&attached);
   jclass cls;
@@ -149,43 +126,46 @@ static int32_t o3dj_progress_trampoline(double fraction, void *user_data) {
   cls = (*env)->GetObjectClass(env, (jobject)user_data);
   mid = cls ? (*env)->GetMethodID(env, cls, "onProgress", "(D)Z") : 0;
   if (mid) go_on = (*env)->CallBooleanMethod(env, (jobject)user_data, mid, (jdouble)fraction);
-  if ((*env)->ExceptionCheck(env)) {
-    (*env)->ExceptionClear(env);
-    go_on = JNI_FALSE;
-  }
+  if ((*env)->ExceptionCheck(env)) { (*env)->ExceptionClear(env); go_on = JNI_FALSE; }
   if (cls) (*env)->DeleteLocalRef(env, cls);
   if (attached) (*o3dj_vm)->DetachCurrentThread(o3dj_vm);
   return go_on ? 0 : 1;
 }
+static void o3dj_set_progress(JNIEnv *jenv, o3d_progress_callback *fn, void **user_data, jobject progress) {
+  if (!o3dj_vm) (*jenv)->GetJavaVM(jenv, &o3dj_vm);
+  if (*user_data) (*jenv)->DeleteGlobalRef(jenv, (jobject)*user_data);
+  *user_data = progress ? (void *)(*jenv)->NewGlobalRef(jenv, progress) : NULL;
+  *fn = progress ? o3dj_progress : NULL;
+}
+/* o3d_log_callback -> the handler (a global reference) .accept(level, message) */
+static jobject o3dj_log_handler = 0;
+static void o3dj_log(int32_t level, const char *message, void *user_data) {
+  int attached;
+  JNIEnv *env = o3dj_env(&attached);
+  jclass icls;
+  jmethodID accept, valueOf;
+  (void)user_data;
+  if (!env || !o3dj_log_handler) return;
+  icls = (*env)->FindClass(env, "java/lang/Integer");
+  valueOf = icls ? (*env)->GetStaticMethodID(env, icls, "valueOf", "(I)Ljava/lang/Integer;") : 0;
+  accept = (*env)->GetMethodID(env, (*env)->GetObjectClass(env, o3dj_log_handler), "accept", "(Ljava/lang/Object;Ljava/lang/Object;)V");
+  if (valueOf && accept)
+    (*env)->CallVoidMethod(env, o3dj_log_handler, accept, (*env)->CallStaticObjectMethod(env, icls, valueOf, (jint)level),
+                           (*env)->NewStringUTF(env, message ? message : ""));
+  if ((*env)->ExceptionCheck(env)) (*env)->ExceptionClear(env); /* a handler must not throw */
+  if (attached) (*o3dj_vm)->DetachCurrentThread(o3dj_vm);
+}
 %}
-
+%define O3DX_PROGRESS(T)
+%extend T { void set_progress(JNIEnv *jenv_, jobject progress) { o3dj_set_progress(jenv_, &$self->progress, &$self->user_data, progress); } }
+%enddef
 %inline %{
-/* A direct ByteBuffer over `bytes` bytes at `address` (a borrowed o3d view); null for address 0. */
-static jobject o3dj_direct_buffer(JNIEnv *jenv_, jlong address, jlong bytes) {
-  if (!address || bytes <= 0) return 0;
-  return (*jenv_)->NewDirectByteBuffer(jenv_, (void *)(intptr_t)address, bytes);
-}
-/* Address of the C log trampoline, after binding it to org.o3d.Log.dispatch(int, String). */
-static jlong o3dj_log_trampoline_address(JNIEnv *jenv_) {
+/* Send o3d's log lines to handler (level, message); null restores stderr. */
+static void set_log_handler(JNIEnv *jenv_, jobject handler) {
   if (!o3dj_vm) (*jenv_)->GetJavaVM(jenv_, &o3dj_vm);
-  if (!o3dj_log_class) {
-    jclass cls = (*jenv_)->FindClass(jenv_, "org/o3d/Log");
-    if (!cls) return 0;
-    o3dj_log_method = (*jenv_)->GetStaticMethodID(jenv_, cls, "dispatch", "(ILjava/lang/String;)V");
-    if (!o3dj_log_method) return 0;
-    o3dj_log_class = (jclass)(*jenv_)->NewGlobalRef(jenv_, cls);
-  }
-  return (jlong)(intptr_t)&o3dj_log_trampoline;
-}
-/* Address of the C progress trampoline; its user_data must be o3dj_new_global_ref(callback). */
-static jlong o3dj_progress_trampoline_address(JNIEnv *jenv_) {
-  if (!o3dj_vm) (*jenv_)->GetJavaVM(jenv_, &o3dj_vm);
-  return (jlong)(intptr_t)&o3dj_progress_trampoline;
-}
-static jlong o3dj_new_global_ref(JNIEnv *jenv_, jobject object) {
-  return object ? (jlong)(intptr_t)(*jenv_)->NewGlobalRef(jenv_, object) : 0;
-}
-static void o3dj_delete_global_ref(JNIEnv *jenv_, jlong ref) {
-  if (ref) (*jenv_)->DeleteGlobalRef(jenv_, (jobject)(intptr_t)ref);
+  o3d_set_log_callback(NULL, NULL);
+  if (o3dj_log_handler) (*jenv_)->DeleteGlobalRef(jenv_, o3dj_log_handler);
+  o3dj_log_handler = handler ? (*jenv_)->NewGlobalRef(jenv_, handler) : 0;
+  if (handler) o3d_set_log_callback(o3dj_log, NULL);
 }
 %}

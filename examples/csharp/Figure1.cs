@@ -19,14 +19,16 @@ static class Figure1
         }
         try
         {
-            using (var pcd = IO.ReadPointCloud(args[0]))
+            using (var pcd = Library.IoReadPointCloud(args[0], null, null))
             using (var down = pcd.VoxelDownSample(0.05))
+            using (var hybrid = new SearchParam { Kind = Library.SEARCH_HYBRID, Radius = 0.1, Knn = 30 })
             {
-                down.EstimateNormals(SearchParam.Hybrid(0.1, 30));
-                IO.WritePointCloud(args[1], down);
-                Console.WriteLine("read {0} points from {1}", pcd.Size, args[0]);
-                Console.WriteLine("voxel_down_sample(0.05) -> {0} points", down.Size);
-                Console.WriteLine("estimate_normals(hybrid radius 0.1, max_nn 30) -> has normals: {0}", down.HasNormals);
+                down.EstimateNormals(hybrid, 0);
+                Library.IoWritePointCloud(args[1], down, null, null);
+                Console.WriteLine("read {0} points from {1}", pcd.Size(), args[0]);
+                Console.WriteLine("voxel_down_sample(0.05) -> {0} points", down.Size());
+                Console.WriteLine("estimate_normals(hybrid radius 0.1, max_nn 30) -> has normals: {0}",
+                                  down.HasArray(Library.POINTCLOUD_NORMALS));
                 Console.WriteLine("wrote {0}", args[1]);
             }
             return 0;

@@ -10,6 +10,8 @@ struct KeepAlive {
     std::shared_ptr<void> p;
 };
 
+}  // namespace
+
 std::string shape_string(const py::array& a) {
     std::string s = "(";
     for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
@@ -26,6 +28,31 @@ py::array as_numeric(py::handle obj, const char* what) {
         invalid(std::string(what) + ": expected numbers, got dtype " + std::string(py::str(a.dtype())));
     return a;
 }
+
+py::array_t<int32_t> as_int32(const py::array& a, const char* what) {
+    if (a.size() == 0) return py::array_t<int32_t>(0);
+    char kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u')
+        invalid(std::string(what) + ": expected integers, got dtype " + std::string(py::str(a.dtype())));
+    if (a.dtype().is(py::dtype::of<int32_t>())) {
+        auto d = py::array_t<int32_t, py::array::c_style>::ensure(a);
+        if (!d) throw py::error_already_set();
+        return d;
+    }
+    auto wide = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!wide) throw py::error_already_set();
+    py::array_t<int32_t> out(wide.size());
+    const int64_t* src = wide.data();
+    int32_t* dst = out.mutable_data();
+    for (py::ssize_t i = 0; i < wide.size(); ++i) {
+        if (src[i] < INT32_MIN || src[i] > INT32_MAX)
+            invalid(std::string(what) + ": index " + std::to_string(src[i]) + " is out of range");
+        dst[i] = (int32_t)src[i];
+    }
+    return out;
+}
+
+namespace {
 
 template <size_t N>
 std::array<double, N> fixed(py::handle obj, const char* what, py::ssize_t rows, py::ssize_t cols) {

@@ -102,7 +102,7 @@ void define_boundingbox(py::module_& m) {
         "get_oriented_bounding_box",
         [](const PyPointCloud& self, bool robust) {
             o3d_obb_t obb{};
-            with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+            locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                 return o3d_pointcloud_get_oriented_bounding_box(&obb, pc, robust ? 1 : 0);
             });
             return make_obb(obb);

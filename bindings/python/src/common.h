@@ -12,7 +12,9 @@
 #include <mutex>
 #include <shared_mutex>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "o3d/o3d.h"
 
@@ -36,6 +38,14 @@ inline void check(o3d_status s, const std::string& filename = std::string()) {
     throw StatusError{s, std::move(msg), filename};
 }
 
+/// A C options struct filled by its *_init (the library's defaults).
+template <typename S>
+S init_of(o3d_status (*init)(S*, uint32_t)) {
+    S s{};
+    check(init(&s, (uint32_t)sizeof(S)));
+    return s;
+}
+
 /// Run a C call with the GIL released (the library may log through a Python callback, which
 /// takes the GIL while holding the library's log lock: calls that may log must not hold the GIL).
 template <typename F>
@@ -44,59 +54,254 @@ o3d_status nogil(F&& f) {
     return f();
 }
 
-/// A point-cloud handle plus a reader/writer lock, so that two Python threads using the same
-/// cloud with the GIL released never break the C API's "const calls only" threading rule.
-struct CloudHandle {
-    o3d_pointcloud_t* pc = nullptr;
+/// A C handle plus a reader/writer lock (the C API allows concurrent const calls only), so that two
+/// Python threads using the same handle with the GIL released never break that rule.
+template <typename T, void (*Destroy)(T*)>
+struct Handle {
+    T* p = nullptr;
     mutable std::shared_mutex mutex;
-    explicit CloudHandle(o3d_pointcloud_t* p) : pc(p) {}
-    CloudHandle(const CloudHandle&) = delete;
-    CloudHandle& operator=(const CloudHandle&) = delete;
-    ~CloudHandle() { o3d_pointcloud_destroy(pc); }
+    explicit Handle(T* raw) : p(raw) {}
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    ~Handle() { Destroy(p); }
 };
+
+/// Run `f(const T*)` under a shared lock with the GIL released; raise on failure.
+template <typename H, typename F>
+void locked_const(const std::shared_ptr<H>& h, F&& f) {
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        std::shared_lock<std::shared_mutex> lock(h->mutex);
+        s = f(static_cast<const std::remove_pointer_t<decltype(h->p)>*>(h->p));
+    }
+    check(s);
+}
+
+/// Run `f(T*)` under an exclusive lock with the GIL released; raise on failure.
+template <typename H, typename F>
+void locked_mut(const std::shared_ptr<H>& h, F&& f) {
+    o3d_status s;
+    {
+        py::gil_scoped_release release;
+        std::unique_lock<std::shared_mutex> lock(h->mutex);
+        s = f(h->p);
+    }
+    check(s);
+}
+
+/// The array family (o3d_<noun>_*_array) and clone of a geometry, by C handle type.
+template <typename T>
+struct Api;
+#define O3DPY_ARRAY_API(noun, index_arrays, matrix_which)                                                  \
+    template <>                                                                                           \
+    struct Api<o3d_##noun##_t> {                                                                          \
+        static constexpr auto destroy = &o3d_##noun##_destroy;                                           \
+        static constexpr auto clone = &o3d_##noun##_clone;                                               \
+        static constexpr auto has = &o3d_##noun##_has_array;                                             \
+        static constexpr auto shape = &o3d_##noun##_array_shape;                                         \
+        static constexpr auto set = &o3d_##noun##_set_array;                                             \
+        static constexpr auto set_f32 = &o3d_##noun##_set_array_f32;                                     \
+        static constexpr auto get = &o3d_##noun##_get_array;                                             \
+        static constexpr auto view = &o3d_##noun##_array_view;                                           \
+        static constexpr auto mutable_view = &o3d_##noun##_array_mutable_view;                           \
+        static constexpr bool indexed = index_arrays;                                                    \
+        static constexpr int32_t matrix = matrix_which; /* an N x 9 array shown as (N, 3, 3) */           \
+    }
+#define O3DPY_INDEX_API(noun)                                                                             \
+    template <>                                                                                           \
+    struct IndexApi<o3d_##noun##_t> {                                                                     \
+        static constexpr auto set = &o3d_##noun##_set_index_array;                                       \
+        static constexpr auto get = &o3d_##noun##_get_index_array;                                       \
+        static constexpr auto view = &o3d_##noun##_index_array_view;                                     \
+        static constexpr auto mutable_view = &o3d_##noun##_index_array_mutable_view;                     \
+    }
+O3DPY_ARRAY_API(pointcloud, false, O3D_POINTCLOUD_COVARIANCES);
+O3DPY_ARRAY_API(trianglemesh, true, -1);
+O3DPY_ARRAY_API(lineset, true, -1);
+O3DPY_ARRAY_API(feature, false, -1);
+template <typename T>
+struct IndexApi;
+O3DPY_INDEX_API(trianglemesh);
+O3DPY_INDEX_API(lineset);
+
+/// A Python-side geometry: its handle, shared with the numpy views on its arrays. `h` is replaced by a
+/// private copy before a call that can reallocate arrays while such views are alive (copy-on-write):
+/// the views keep the old handle alive, so they never dangle.
+template <typename T>
+struct Geom {
+    using C = T;
+    using H = Handle<T, Api<T>::destroy>;
+    std::shared_ptr<H> h;
+    explicit Geom(T* raw) : h(std::make_shared<H>(raw)) {}
+    explicit Geom(std::shared_ptr<H> p) : h(std::move(p)) {}
+    /// Handle for a call that may reallocate arrays: a private clone while views or calls share it.
+    std::shared_ptr<H> for_resize() {
+        if (h.use_count() > 1) {
+            T* copy = nullptr;
+            std::shared_ptr<H> old = h;
+            locked_const(old, [&](const T* p) { return Api<T>::clone(&copy, p); });
+            h = std::make_shared<H>(copy);
+        }
+        return h;
+    }
+};
+
+using CloudHandle = Geom<o3d_pointcloud_t>::H;
 using CloudPtr = std::shared_ptr<CloudHandle>;
 
 /// Take ownership of a freshly created handle.
 inline CloudPtr adopt(o3d_pointcloud_t* pc) { return std::make_shared<CloudHandle>(pc); }
 
-/// o3d.geometry.PointCloud. `h` may be replaced by a private copy before a call that can
-/// reallocate the cloud's arrays while numpy views on the old arrays are alive (copy-on-write):
-/// those views keep the old handle alive, so they never dangle.
-struct PyPointCloud {
-    CloudPtr h;
+/// o3d.geometry.PointCloud.
+struct PyPointCloud : Geom<o3d_pointcloud_t> {
+    using Geom::Geom;
     PyPointCloud();
-    explicit PyPointCloud(CloudPtr p) : h(std::move(p)) {}
-    /// Handle for a call that may reallocate arrays: cloned first when views or in-flight calls
-    /// share the current one.
-    CloudPtr for_resize();
-    /// Handle for an in-place call (arrays keep their addresses; views see the change).
-    CloudPtr for_inplace() const { return h; }
-    const o3d_pointcloud_t* cpc() const { return h->pc; }
     size_t size() const;
 };
 
-/// Run `f(pc)` on the handle with a shared (const) lock, the GIL released.
-template <typename F>
-void with_const(const CloudPtr& h, F&& f) {
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::shared_lock<std::shared_mutex> lock(h->mutex);
-        s = f(static_cast<const o3d_pointcloud_t*>(h->pc));
-    }
-    check(s);
+/// A Python object that owns a shared_ptr (the base of numpy views).
+py::object keepalive(std::shared_ptr<void> p);
+/// Raise o3d.InvalidArgumentError (a ValueError) from the binding itself.
+[[noreturn]] void invalid(const std::string& message);
+
+/// A numeric array-like as an ndarray (None, non-arrays and non-numbers raise InvalidArgumentError).
+py::array as_numeric(py::handle obj, const char* what);
+/// "(2, 3)": an array's shape as Python prints it.
+std::string shape_string(const py::array& a);
+/// An integer ndarray as C-contiguous int32, each value checked against the int32 range.
+py::array_t<int32_t> as_int32(const py::array& a, const char* what);
+
+/// Python shape of `rows` rows of array `which` of `cols` values each: (rows,) for one column,
+/// (rows, 3, 3) for the geometry's matrix array, else (rows, cols).
+template <typename T>
+std::vector<py::ssize_t> py_shape(size_t rows, size_t cols, int32_t which) {
+    if (which == Api<T>::matrix) return {(py::ssize_t)rows, 3, 3};
+    if (cols == 1) return {(py::ssize_t)rows};
+    return {(py::ssize_t)rows, (py::ssize_t)cols};
 }
 
-/// Run `f(pc)` on the handle with an exclusive lock, the GIL released.
-template <typename F>
-void with_mut(const CloudPtr& h, F&& f) {
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::unique_lock<std::shared_mutex> lock(h->mutex);
-        s = f(h->pc);
+inline py::dtype array_dtype(int32_t which) {
+    return which >= O3D_INDEX_ARRAY_FIRST ? py::dtype::of<int32_t>() : py::dtype::of<double>();
+}
+
+/// Zero-copy view of array `which` (writable or read-only); its base keeps the handle `h` alive.
+template <typename T, typename H>
+py::array array_view(const std::shared_ptr<H>& h, int32_t which, bool writable) {
+    void* data = nullptr;
+    size_t rows = 0, cols = 0;
+    auto get = [&](T* p) -> o3d_status {
+        o3d_status s = Api<T>::shape(&rows, &cols, p, which);
+        if (s != O3D_OK) return s;
+        if constexpr (Api<T>::indexed) {
+            if (which >= O3D_INDEX_ARRAY_FIRST)
+                return writable ? IndexApi<T>::mutable_view(reinterpret_cast<int32_t**>(&data), &rows, p, which)
+                                : IndexApi<T>::view(const_cast<const int32_t**>(reinterpret_cast<int32_t**>(&data)),
+                                                    &rows, p, which);
+        }
+        return writable ? Api<T>::mutable_view(reinterpret_cast<double**>(&data), &rows, p, which)
+                        : Api<T>::view(const_cast<const double**>(reinterpret_cast<double**>(&data)), &rows, p, which);
+    };
+    if (writable)
+        locked_mut(h, get);
+    else
+        locked_const(h, [&](const T* p) { return get(const_cast<T*>(p)); });
+    auto shape = py_shape<T>(rows, cols, which);
+    if (!data || rows == 0) return py::array(array_dtype(which), shape);
+    py::array a(array_dtype(which), shape, data, keepalive(h));
+    if (!writable) a.attr("setflags")(py::arg("write") = false);
+    return a;
+}
+
+/// A copy of array `which` (o3d_<noun>_get_array / get_index_array), independent of the geometry.
+template <typename T, typename H>
+py::array array_copy(const std::shared_ptr<H>& h, int32_t which) {
+    std::vector<char> buf;
+    size_t rows = 0, cols = 0;
+    const bool idx = which >= O3D_INDEX_ARRAY_FIRST;
+    locked_const(h, [&](const T* p) {
+        o3d_status s = Api<T>::shape(&rows, &cols, p, which);
+        if (s != O3D_OK) return s;
+        buf.resize(rows * cols * (idx ? sizeof(int32_t) : sizeof(double)));
+        if constexpr (Api<T>::indexed) {
+            if (idx) return IndexApi<T>::get(reinterpret_cast<int32_t*>(buf.data()), rows, &rows, p, which);
+        }
+        return Api<T>::get(reinterpret_cast<double*>(buf.data()), rows, &rows, p, which);
+    });
+    py::array out(array_dtype(which), py_shape<T>(rows, cols, which));
+    if (!buf.empty()) std::memcpy(out.mutable_data(), buf.data(), buf.size());
+    return out;
+}
+
+/// Whether array `which` counts (o3d_<noun>_has_array).
+template <typename T, typename H>
+bool array_has(const std::shared_ptr<H>& h, int32_t which) {
+    int32_t v = 0;
+    locked_const(h, [&](const T* p) { return Api<T>::has(&v, p, which); });
+    return v != 0;
+}
+
+/// Replace array `which` of a geometry with an array-like of its shape (float32 taken as is, integers
+/// range-checked); copy-on-write first, so live views keep the old data.
+template <typename G>
+void array_set(G& self, int32_t which, py::handle value, const char* what) {
+    using T = typename G::C;
+    size_t rows = 0, cols = 0;
+    locked_const(self.h, [&](const T* p) { return Api<T>::shape(&rows, &cols, p, which); });
+    auto want = py_shape<T>(0, cols, which);
+    py::array a = as_numeric(value, what);
+    size_t n = 0;
+    if (a.size() != 0) {
+        bool ok = a.ndim() == (py::ssize_t)want.size();
+        for (size_t i = 1; ok && i < want.size(); ++i) ok = a.shape((py::ssize_t)i) == want[i];
+        if (!ok) {
+            std::string w = "(N";
+            for (size_t i = 1; i < want.size(); ++i) w += ", " + std::to_string(want[i]);
+            invalid(std::string(what) + ": expected an " + w + (want.size() == 1 ? ",)" : ")") + " array, got shape " +
+                    shape_string(a));
+        }
+        n = (size_t)a.shape(0);
     }
-    check(s);
+    if (which >= O3D_INDEX_ARRAY_FIRST) {
+        if constexpr (Api<T>::indexed) {
+            py::array_t<int32_t> v = as_int32(a, what);
+            locked_mut(self.for_resize(), [&](T* p) { return IndexApi<T>::set(p, which, n ? v.data() : nullptr, n); });
+        }
+        return;
+    }
+    if (a.dtype().is(py::dtype::of<float>())) {
+        auto f = py::array_t<float, py::array::c_style>::ensure(a);  // copies only if strided
+        if (!f) throw py::error_already_set();
+        locked_mut(self.for_resize(), [&](T* p) { return Api<T>::set_f32(p, which, n ? f.data() : nullptr, n); });
+        return;
+    }
+    auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!d) throw py::error_already_set();
+    locked_mut(self.for_resize(), [&](T* p) { return Api<T>::set(p, which, n ? d.data() : nullptr, n); });
+}
+
+/// A geometry property over array `which`: a zero-copy view (writable unless `readonly`); assigning
+/// replaces the array.
+template <typename G>
+void def_array(py::class_<G>& cls, const char* name, int32_t which, const char* doc, bool readonly = false) {
+    cls.def_property(
+        name, [which, readonly](G& self) { return array_view<typename G::C>(self.h, which, !readonly); },
+        [which, name](G& self, py::handle v) { array_set(self, which, v, name); }, doc);
+}
+
+/// has_<name>() over o3d_<noun>_has_array.
+template <typename G>
+void def_has(py::class_<G>& cls, const char* name, int32_t which) {
+    cls.def(name, [which](const G& self) { return array_has<typename G::C>(self.h, which); });
+}
+
+/// _array_copy(which) and _readonly_view(which): the copy-out and read-only view paths of every array.
+template <typename G>
+void def_array_access(py::class_<G>& cls) {
+    cls.def("_array_copy", [](const G& self, int32_t which) { return array_copy<typename G::C>(self.h, which); },
+            py::arg("which"), "Copy of array `which` (the C constant), not a view.")
+        .def("_readonly_view", [](const G& self, int32_t which) { return array_view<typename G::C>(self.h, which, false); },
+             py::arg("which"), "Read-only zero-copy view of array `which` (the C constant).");
 }
 
 /// An (N,3) input buffer, float64 or float32, C-contiguous (converted only when it must be).
@@ -119,14 +324,9 @@ std::array<double, 9> as_mat3(py::handle obj, const char* what);
 /// o3d_search_param_t from a KDTreeSearchParam* object (None: the C default, KNN 30).
 o3d_search_param_t to_search_param(py::handle obj);
 
-/// Raise o3d.InvalidArgumentError (a ValueError) from the binding itself.
-[[noreturn]] void invalid(const std::string& message);
-
 /// Read-only or writable zero-copy (n,cols) array on `data`, whose base object keeps `owner` alive.
 py::array view_array(const double* data, size_t n, size_t cols, py::object owner, bool writable);
 
-/// A Python object that owns a shared_ptr (the base of numpy views).
-py::object keepalive(std::shared_ptr<void> p);
 
 // Registration passes (declarations first, then definitions; see module.cpp).
 void declare_errors(py::module_& m);

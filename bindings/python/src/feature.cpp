@@ -9,18 +9,8 @@ namespace {
 PyFeature adopt_feature(o3d_feature_t* raw) { return PyFeature(raw); }
 
 /// Zero-copy (dimension, num) float64 view: descriptor i is column i, contiguous in memory (Fortran
-/// order), as Open3D's Eigen matrix. The view's base keeps the handle alive.
-py::array data_view(const PyFeature& f) {
-    FeaturePtr h = f.h;
-    size_t dim = f.dimension(), num = f.num();
-    double* p = nullptr;
-    check(o3d_feature_data(&p, h->p));
-    if (!p || dim == 0 || num == 0)
-        return py::array_t<double>(std::vector<py::ssize_t>{(py::ssize_t)dim, (py::ssize_t)num});
-    std::vector<py::ssize_t> shape{(py::ssize_t)dim, (py::ssize_t)num};
-    std::vector<py::ssize_t> strides{(py::ssize_t)sizeof(double), (py::ssize_t)(dim * sizeof(double))};
-    return py::array(py::dtype::of<double>(), shape, strides, p, keepalive(h));
-}
+/// order), as Open3D's Eigen matrix: the transpose of the C (num, dimension) array.
+py::object data_view(const PyFeature& f) { return array_view<o3d_feature_t>(f.h, O3D_FEATURE_DATA, true).attr("T"); }
 
 /// A feature holding a copy of a (dimension, num) array-like.
 PyFeature from_matrix(py::handle data) {
@@ -63,7 +53,7 @@ PyFeature compute_fpfh(const PyPointCloud& input, py::handle search_param, py::h
     CloudPtr h = input.h;
     const int64_t* ip = idx.size() ? idx.data() : nullptr;
     size_t n = (size_t)idx.size();
-    with_const(h, [&](const o3d_pointcloud_t* pc) {
+    locked_const(h, [&](const o3d_pointcloud_t* pc) {
         return o3d_compute_fpfh_feature(&out, pc, &p, ip, n, num_threads);
     });
     PyFeature all = adopt_feature(out);
@@ -102,21 +92,7 @@ py::array_t<int32_t> correspondences(const PyFeature& source, const PyFeature& t
 
 }  // namespace
 
-PyFeature::PyFeature() {
-    o3d_feature_t* raw = nullptr;
-    check(o3d_feature_create(&raw, 0, 0));
-    h = std::make_shared<FeatureHandle>(raw);
-}
-
-FeaturePtr PyFeature::for_resize() {
-    if (h.use_count() > 1) {  // numpy views (or another thread's call) share it: resize a private copy
-        FeaturePtr old = h;
-        o3d_feature_t* copy = nullptr;
-        locked_const(old, [&](const o3d_feature_t* p) { return o3d_feature_clone(&copy, p); });
-        h = std::make_shared<FeatureHandle>(copy);
-    }
-    return h;
-}
+PyFeature::PyFeature() : Geom(nullptr) { check(o3d_feature_create(&h->p, 0, 0)); }
 
 size_t PyFeature::dimension() const {
     size_t d = 0;
@@ -173,11 +149,8 @@ void define_feature(py::module_& m) {
         .def("__deepcopy__", [](const PyFeature& self, py::handle) { return clone(self); }, py::arg("memo"))
         .def(py::pickle(
             [](const PyFeature& self) {
-                size_t dim = self.dimension(), num = self.num();
-                py::array_t<double> flat((py::ssize_t)(dim * num));
-                double* p = flat.mutable_data();
-                locked_const(self.h, [&](const o3d_feature_t* f) { return o3d_feature_get_data(p, dim * num, f); });
-                return py::make_tuple(dim, num, flat);
+                py::array flat = array_copy<o3d_feature_t>(self.h, O3D_FEATURE_DATA).attr("reshape")(-1);
+                return py::make_tuple(self.dimension(), self.num(), flat);
             },
             [](py::tuple t) {
                 if (t.size() != 3) invalid("Feature: bad pickle state");

@@ -3,22 +3,11 @@
 // camera.h). Each owns its C handle through a shared_ptr so numpy views can keep it alive.
 #pragma once
 
-#include <type_traits>
+#include <optional>
 
 #include "common.h"
 
 namespace o3dpy {
-
-/// A C handle plus a reader/writer lock (the C API allows concurrent const calls only).
-template <typename T, void (*Destroy)(T*)>
-struct Handle {
-    T* p = nullptr;
-    mutable std::shared_mutex mutex;
-    explicit Handle(T* raw) : p(raw) {}
-    Handle(const Handle&) = delete;
-    Handle& operator=(const Handle&) = delete;
-    ~Handle() { Destroy(p); }
-};
 
 using MeshHandle = Handle<o3d_trianglemesh_t, &o3d_trianglemesh_destroy>;
 using MeshPtr = std::shared_ptr<MeshHandle>;
@@ -33,37 +22,10 @@ using VoxelGridPtr = std::shared_ptr<VoxelGridHandle>;
 using OctreeHandle = Handle<o3d_octree_t, &o3d_octree_destroy>;
 using OctreePtr = std::shared_ptr<OctreeHandle>;
 
-/// Run `f(const T*)` under a shared lock with the GIL released; raise on failure.
-template <typename H, typename F>
-void locked_const(const std::shared_ptr<H>& h, F&& f) {
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::shared_lock<std::shared_mutex> lock(h->mutex);
-        s = f(static_cast<const std::remove_pointer_t<decltype(h->p)>*>(h->p));
-    }
-    check(s);
-}
-
-/// Run `f(T*)` under an exclusive lock with the GIL released; raise on failure.
-template <typename H, typename F>
-void locked_mut(const std::shared_ptr<H>& h, F&& f) {
-    o3d_status s;
-    {
-        py::gil_scoped_release release;
-        std::unique_lock<std::shared_mutex> lock(h->mutex);
-        s = f(h->p);
-    }
-    check(s);
-}
-
 /// o3d.geometry.TriangleMesh; copy-on-write before resizing calls, as PyPointCloud.
-struct PyTriangleMesh {
-    MeshPtr h;
+struct PyTriangleMesh : Geom<o3d_trianglemesh_t> {
+    using Geom::Geom;
     PyTriangleMesh();
-    explicit PyTriangleMesh(o3d_trianglemesh_t* raw) : h(std::make_shared<MeshHandle>(raw)) {}
-    /// Handle for a call that may reallocate arrays: a private clone while views share the current one.
-    MeshPtr for_resize();
 };
 
 /// o3d.geometry.Image. No C call resizes an image in place, so the pixel memory is fixed for the
@@ -109,12 +71,76 @@ std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle b
 py::object make_aabb(const double* lo, const double* hi);
 PyImage image_from_array(py::handle obj);
 
+/// transform, translate, rotate, scale and the bounds: the same functions for every geometry.
+template <typename G, typename T = typename G::C>
+void def_spatial(py::class_<G>& cls, o3d_status (*transform)(T*, const double*),
+                 o3d_status (*translate)(T*, const double*, int32_t), o3d_status (*rotate)(T*, const double*, const double*),
+                 o3d_status (*scale)(T*, double, const double*), o3d_status (*min_bound)(double*, const T*),
+                 o3d_status (*max_bound)(double*, const T*), o3d_status (*center)(double*, const T*),
+                 o3d_status (*aabb)(double*, double*, const T*)) {
+    auto optional_center = [](py::handle c) {
+        std::optional<std::array<double, 3>> out;
+        if (!c.is_none()) out = as_vec3(c, "center");
+        return out;
+    };
+    cls.def(
+           "transform",
+           [transform](py::object self, py::handle M) {
+               auto t = as_mat4(M, "transformation");
+               locked_mut(self.cast<G&>().h, [&](T* p) { return transform(p, t.data()); });
+               return self;
+           },
+           py::arg("transformation"), "Apply a 4x4 homogeneous transform (normals rotated). Returns self.")
+        .def(
+            "translate",
+            [translate](py::object self, py::handle t, bool relative) {
+                auto v = as_vec3(t, "translation");
+                locked_mut(self.cast<G&>().h, [&](T* p) { return translate(p, v.data(), relative ? 1 : 0); });
+                return self;
+            },
+            py::arg("translation"), py::arg("relative") = true,
+            "relative=True: add translation; False: move the center to it. Returns self.")
+        .def(
+            "rotate",
+            [rotate, optional_center](py::object self, py::handle R, py::handle c) {
+                auto r = as_mat3(R, "R");
+                auto oc = optional_center(c);
+                locked_mut(self.cast<G&>().h, [&](T* p) { return rotate(p, r.data(), oc ? oc->data() : nullptr); });
+                return self;
+            },
+            py::arg("R"), py::arg("center") = py::none(), "Rotate by the 3x3 matrix R about center (None: the center). Returns self.")
+        .def(
+            "scale",
+            [scale, optional_center](py::object self, double s, py::handle c) {
+                auto oc = optional_center(c);
+                locked_mut(self.cast<G&>().h, [&](T* p) { return scale(p, s, oc ? oc->data() : nullptr); });
+                return self;
+            },
+            py::arg("scale"), py::arg("center") = py::none(), "Scale about center (None: the center). Returns self.");
+    for (auto [name, fn] : {std::pair{"get_min_bound", min_bound}, {"get_max_bound", max_bound}, {"get_center", center}})
+        cls.def(name, [fn = fn](const G& self) {
+            std::array<double, 3> v{};
+            locked_const(self.h, [&](const T* p) { return fn(v.data(), p); });
+            return vec3_to_array(v.data());
+        });
+    cls.def(
+        "get_axis_aligned_bounding_box",
+        [aabb](const G& self) {
+            std::array<double, 3> lo{}, hi{};
+            locked_const(self.h, [&](const T* p) { return aabb(lo.data(), hi.data(), p); });
+            return make_aabb(lo.data(), hi.data());
+        },
+        "The axis-aligned bounding box (o3d.geometry.AxisAlignedBoundingBox).");
+}
+#define O3DPY_DEF_SPATIAL(cls, noun)                                                                           \
+    def_spatial(cls, &o3d_##noun##_transform, &o3d_##noun##_translate, &o3d_##noun##_rotate, &o3d_##noun##_scale, \
+                &o3d_##noun##_get_min_bound, &o3d_##noun##_get_max_bound, &o3d_##noun##_get_center,             \
+                &o3d_##noun##_get_axis_aligned_bounding_box)
+
 /// o3d.geometry.LineSet; copy-on-write before resizing calls, as PyPointCloud.
-struct PyLineSet {
-    LineSetPtr h;
+struct PyLineSet : Geom<o3d_lineset_t> {
+    using Geom::Geom;
     PyLineSet();
-    explicit PyLineSet(o3d_lineset_t* raw) : h(std::make_shared<LineSetHandle>(raw)) {}
-    LineSetPtr for_resize();
 };
 
 /// o3d.geometry.VoxelGrid (immutable once created: the C API has no mutating call).
@@ -175,7 +201,6 @@ void declare_voxelgrid(py::module_& m);
 void declare_octree(py::module_& m);
 void define_boundingbox(py::module_& m);
 void define_hull(py::module_& m);
-void define_covariances(py::module_& m);
 void define_lineset(py::module_& m);
 void define_voxelgrid(py::module_& m);
 void define_octree(py::module_& m);

@@ -27,7 +27,7 @@ void define_hull(py::module_& m) {
            "compute_convex_hull",
            [](const PyPointCloud& self, bool joggle_inputs) {
                return mesh_and_indices(self.size(), [&](o3d_trianglemesh_t** out, int32_t* idx, size_t cap, size_t* n) {
-                   with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                   locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                        return o3d_pointcloud_compute_convex_hull(out, idx, cap, n, pc, joggle_inputs ? 1 : 0);
                    });
                });
@@ -40,7 +40,7 @@ void define_hull(py::module_& m) {
             [](const PyPointCloud& self, py::handle camera_location, double radius) {
                 auto cam = as_vec3(camera_location, "camera_location");
                 return mesh_and_indices(self.size(), [&](o3d_trianglemesh_t** out, int32_t* idx, size_t cap, size_t* n) {
-                    with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                    locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                         return o3d_pointcloud_hidden_point_removal(out, idx, cap, n, pc, cam.data(), radius);
                     });
                 });

@@ -17,16 +17,14 @@ std::string format_string(py::handle format) {
 }
 
 o3d_read_options_t read_opts(bool remove_nan, bool remove_inf) {
-    o3d_read_options_t o;
-    check(o3d_read_options_init(&o, sizeof(o)));
+    o3d_read_options_t o = init_of(&o3d_read_options_init);
     o.remove_nan_points = remove_nan ? 1 : 0;
     o.remove_infinite_points = remove_inf ? 1 : 0;
     return o;
 }
 
 o3d_write_options_t write_opts(bool write_ascii, bool compressed) {
-    o3d_write_options_t o;
-    check(o3d_write_options_init(&o, sizeof(o)));
+    o3d_write_options_t o = init_of(&o3d_write_options_init);
     o.write_ascii = write_ascii ? 1 : 0;
     o.compressed = compressed ? 1 : 0;
     return o;
@@ -37,7 +35,7 @@ using BufferPtr = std::shared_ptr<o3d_buffer_t>;
 BufferPtr encode(const PyPointCloud& pcd, const std::string& fmt, bool write_ascii, bool compressed) {
     o3d_write_options_t o = write_opts(write_ascii, compressed);
     o3d_buffer_t* buf = nullptr;
-    with_const(pcd.h, [&](const o3d_pointcloud_t* pc) {
+    locked_const(pcd.h, [&](const o3d_pointcloud_t* pc) {
         return o3d_io_write_point_cloud_to_memory(&buf, pc, fmt.c_str(), &o);
     });
     return BufferPtr(buf, o3d_buffer_destroy);
@@ -75,7 +73,7 @@ void define_io(py::module_& m) {
                 CloudPtr h = pointcloud.h;
                 py::gil_scoped_release release;
                 std::shared_lock<std::shared_mutex> lock(h->mutex);
-                s = o3d_io_write_point_cloud(path.c_str(), h->pc, fmt.c_str(), &o);
+                s = o3d_io_write_point_cloud(path.c_str(), h->p, fmt.c_str(), &o);
             }
             check(s, path);
             return true;

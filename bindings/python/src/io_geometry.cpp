@@ -10,15 +10,13 @@ namespace {
 std::string format_of(py::handle format) { return format.is_none() ? std::string("auto") : format.cast<std::string>(); }
 
 o3d_mesh_read_options_t mesh_read_opts(bool enable_post_processing) {
-    o3d_mesh_read_options_t o;
-    check(o3d_mesh_read_options_init(&o, sizeof(o)));
+    o3d_mesh_read_options_t o = init_of(&o3d_mesh_read_options_init);
     o.enable_post_processing = enable_post_processing ? 1 : 0;
     return o;
 }
 
 o3d_mesh_write_options_t mesh_write_opts(bool write_ascii, bool compressed, bool normals, bool colors, bool uvs) {
-    o3d_mesh_write_options_t o;
-    check(o3d_mesh_write_options_init(&o, sizeof(o)));
+    o3d_mesh_write_options_t o = init_of(&o3d_mesh_write_options_init);
     o.write_ascii = write_ascii ? 1 : 0;
     o.compressed = compressed ? 1 : 0;
     o.write_vertex_normals = normals ? 1 : 0;

@@ -23,7 +23,7 @@ struct KDTree {
 
 TreePtr tree_from_cloud(const PyPointCloud& pc) {
     o3d_kdtree_t* t = nullptr;
-    with_const(pc.h, [&](const o3d_pointcloud_t* c) { return o3d_kdtree_create_from_pointcloud(&t, c); });
+    locked_const(pc.h, [&](const o3d_pointcloud_t* c) { return o3d_kdtree_create_from_pointcloud(&t, c); });
     return TreePtr(t, o3d_kdtree_destroy);
 }
 
@@ -130,42 +130,34 @@ py::tuple batch(const KDTree& self, py::handle queries, const o3d_search_param_t
     return py::make_tuple(offsets, flat_view(idx, total, owner), flat_view(d2, total, owner));
 }
 
-// One query, Open3D style: (k, indices, distances2), copied out with o3d_search_result_get_*.
+/// (k, indices, distances2) of a one-query result, copied out with o3d_search_result_get_*.
+py::tuple copy_single(const ResultPtr& r) {
+    size_t nq = 0, total = 0, n = 0;
+    check(o3d_search_result_counts(&nq, &total, r.get()));
+    py::array_t<int32_t> idx((py::ssize_t)total);
+    py::array_t<double> d2((py::ssize_t)total);
+    check(o3d_search_result_get_indices(idx.mutable_data(), total, &n, r.get()));
+    check(o3d_search_result_get_distances2(d2.mutable_data(), total, &n, r.get()));
+    return py::make_tuple((int)total, idx, d2);
+}
+
+// One query, Open3D style: (k, indices, distances2).
 py::tuple single(const KDTree& self, py::handle query, const o3d_search_param_t& p) {
     auto v = as_vec3(query, "query");
     Rows3 q;
     q.arr = py::array_t<double>(std::vector<py::ssize_t>{1, 3}, v.data());
     q.n = 1;
-    ResultPtr r = run_search(need(self), q, p, 1);
-    size_t nq = 0, total = 0;
-    check(o3d_search_result_counts(&nq, &total, r.get()));
-    int64_t offsets[2] = {0, 0};
-    check(o3d_search_result_get_offsets(offsets, 2, r.get()));
-    py::array_t<int32_t> idx((py::ssize_t)total);
-    py::array_t<double> d2((py::ssize_t)total);
-    check(o3d_search_result_get_indices(idx.mutable_data(), total, r.get()));
-    check(o3d_search_result_get_distances2(d2.mutable_data(), total, r.get()));
-    return py::make_tuple((int)(offsets[1] - offsets[0]), idx, d2);
+    return copy_single(run_search(need(self), q, p, 1));
 }
 
 // One query of the tree's dimension (Open3D's search_*_vector_xd): (k, indices, distances2).
 py::tuple single_xd(const KDTree& self, py::handle query, const o3d_search_param_t& p) {
     const TreePtr& tree = need(self);
-    py::array a = py::array::ensure(query);
-    if (!a) invalid("query: expected a vector of numbers");
-    char kind = a.dtype().kind();
-    if (kind != 'f' && kind != 'i' && kind != 'u') invalid("query: expected numbers, got dtype " + std::string(py::str(a.dtype())));
+    py::array a = as_numeric(query, "query");
     if (!(a.ndim() == 1 || (a.ndim() == 2 && (a.shape(0) == 1 || a.shape(1) == 1)))) invalid("query: expected a vector");
     auto q = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
     if (!q) throw py::error_already_set();
-    ResultPtr r = run_search_xd(tree, q.data(), 1, (size_t)q.size(), p, 1);
-    size_t nq = 0, total = 0;
-    check(o3d_search_result_counts(&nq, &total, r.get()));
-    py::array_t<int32_t> idx((py::ssize_t)total);
-    py::array_t<double> d2((py::ssize_t)total);
-    check(o3d_search_result_get_indices(idx.mutable_data(), total, r.get()));
-    check(o3d_search_result_get_distances2(d2.mutable_data(), total, r.get()));
-    return py::make_tuple((int)total, idx, d2);
+    return copy_single(run_search_xd(tree, q.data(), 1, (size_t)q.size(), p, 1));
 }
 
 o3d_search_param_t knn_param(int32_t knn) {
@@ -220,7 +212,7 @@ void define_kdtree(py::module_& m) {
                  s.p = knn_param(knn);
                  return s;
              }),
-             py::arg("knn") = 30)
+             py::arg("knn") = init_of(&o3d_search_param_init).knn)
         .def_property(
             "knn", [](const SearchParamKNN& s) { return s.p.knn; }, [](SearchParamKNN& s, int32_t v) { s.p.knn = v; })
         .def("__repr__", [](const SearchParamKNN& s) { return "KDTreeSearchParamKNN(knn=" + std::to_string(s.p.knn) + ")"; });

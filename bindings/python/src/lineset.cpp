@@ -8,50 +8,9 @@
 
 namespace o3dpy {
 
-PyLineSet::PyLineSet() {
-    o3d_lineset_t* raw = nullptr;
-    check(o3d_lineset_create(&raw));
-    h = std::make_shared<LineSetHandle>(raw);
-}
-
-LineSetPtr PyLineSet::for_resize() {
-    if (h.use_count() > 1) {  // views share the current arrays: keep them valid with a private copy
-        o3d_lineset_t* copy = nullptr;
-        LineSetPtr old = h;
-        locked_const(old, [&](const o3d_lineset_t* ls) { return o3d_lineset_clone(&copy, ls); });
-        h = std::make_shared<LineSetHandle>(copy);
-    }
-    return h;
-}
+PyLineSet::PyLineSet() : Geom(nullptr) { check(o3d_lineset_create(&h->p)); }
 
 namespace {
-
-py::array float_view(const PyLineSet& self, int32_t which) {
-    LineSetPtr h = self.h;
-    const double* data = nullptr;
-    size_t n = 0;
-    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(&data, &n, ls, which); });
-    return view_array(data, n, 3, keepalive(h), false);
-}
-
-void set_float(PyLineSet& self, int32_t which, py::handle value) {
-    auto a = rows3_f64(value, which == O3D_LINESET_POINTS ? "points" : "colors");
-    const size_t n = (size_t)a.shape(0);
-    locked_mut(self.for_resize(),
-               [&](o3d_lineset_t* ls) { return o3d_lineset_set_array(ls, which, n ? a.data() : nullptr, n); });
-}
-
-py::array lines_view(const PyLineSet& self) {
-    LineSetPtr h = self.h;
-    const int32_t* data = nullptr;
-    size_t n = 0;
-    locked_const(h, [&](const o3d_lineset_t* ls) { return o3d_lineset_index_array_view(&data, &n, ls, O3D_LINESET_LINES); });
-    if (!data || n == 0) return py::array_t<int32_t>(std::vector<py::ssize_t>{0, 2});
-    py::array a(py::dtype::of<int32_t>(), {(py::ssize_t)n, (py::ssize_t)2},
-                {(py::ssize_t)(2 * sizeof(int32_t)), (py::ssize_t)sizeof(int32_t)}, data, keepalive(h));
-    a.attr("setflags")(py::arg("write") = false);
-    return a;
-}
 
 /// An (M, 2) array of integers as int32 (values outside int32 raise; negative ones are caught by the C
 /// calls that follow the lines).
@@ -75,22 +34,10 @@ std::vector<int32_t> pairs_of(py::handle value, const char* what) {
     return out;
 }
 
-void set_lines(PyLineSet& self, py::handle value) {
-    std::vector<int32_t> l = pairs_of(value, "lines");
-    locked_mut(self.for_resize(), [&](o3d_lineset_t* ls) { return o3d_lineset_set_index_array(ls, O3D_LINESET_LINES, l.data(), l.size() / 2); });
-}
-
-size_t count(const PyLineSet& self, o3d_status (*fn)(const o3d_lineset_t*, size_t*)) {
+size_t count(const PyLineSet& self, o3d_status (*fn)(size_t*, const o3d_lineset_t*)) {
     size_t n = 0;
-    locked_const(self.h, [&](const o3d_lineset_t* ls) { return fn(ls, &n); });
+    locked_const(self.h, [&](const o3d_lineset_t* ls) { return fn(&n, ls); });
     return n;
-}
-
-bool has_colors(const PyLineSet& self) {
-    const double* data = nullptr;
-    size_t n = 0;
-    locked_const(self.h, [&](const o3d_lineset_t* ls) { return o3d_lineset_array_view(&data, &n, ls, O3D_LINESET_COLORS); });
-    return n > 0 && n == count(self, &o3d_lineset_num_lines);
 }
 
 template <typename F>
@@ -119,30 +66,19 @@ void define_lineset(py::module_& m) {
     cls.def(py::init<>(), "An empty line set.")
         .def(py::init([](py::handle points, py::handle lines) {
                  PyLineSet ls;
-                 set_float(ls, O3D_LINESET_POINTS, points);
-                 set_lines(ls, lines);
+                 array_set(ls, O3D_LINESET_POINTS, points, "points");
+                 array_set(ls, O3D_LINESET_LINES, lines, "lines");
                  return ls;
              }),
              py::arg("points"), py::arg("lines"), "A line set with these points and lines.")
         .def(py::init([](const PyLineSet& other) { return clone(other); }), py::arg("cpp_line_set"), "Deep copy.")
         .def("__copy__", [](const PyLineSet& self) { return clone(self); })
         .def("__deepcopy__", [](const PyLineSet& self, py::handle) { return clone(self); })
-        .def_property(
-            "points", [](const PyLineSet& self) { return float_view(self, O3D_LINESET_POINTS); },
-            [](PyLineSet& self, py::handle v) { set_float(self, O3D_LINESET_POINTS, v); }, "(N, 3) float64 points.")
-        .def_property(
-            "colors", [](const PyLineSet& self) { return float_view(self, O3D_LINESET_COLORS); },
-            [](PyLineSet& self, py::handle v) { set_float(self, O3D_LINESET_COLORS, v); },
-            "(M, 3) float64 line colors in [0, 1].")
-        .def_property(
-            "lines", [](const PyLineSet& self) { return lines_view(self); },
-            [](PyLineSet& self, py::handle v) { set_lines(self, v); }, "(M, 2) int32 point indices.")
         .def("has_points", [](const PyLineSet& self) { return count(self, &o3d_lineset_num_points) > 0; })
         .def("has_lines",
              [](const PyLineSet& self) {
                  return count(self, &o3d_lineset_num_points) > 0 && count(self, &o3d_lineset_num_lines) > 0;
              })
-        .def("has_colors", [](const PyLineSet& self) { return has_colors(self); })
         .def("is_empty", [](const PyLineSet& self) { return count(self, &o3d_lineset_num_points) == 0; })
         .def("__repr__",
              [](const PyLineSet& self) {
@@ -165,34 +101,6 @@ void define_lineset(py::module_& m) {
                 return self;
             },
             py::arg("transformation"), "Apply a 4x4 homogeneous transform to the points. Returns self.")
-        .def(
-            "_copy_arrays",
-            [](const PyLineSet& self) {
-                // Copy-out path (o3d_lineset_get_*): snapshots independent of the line set.
-                std::vector<double> pts, cols;
-                std::vector<int32_t> lines;
-                size_t np = 0, nc = 0, nl = 0;
-                locked_const(self.h, [&](const o3d_lineset_t* ls) {
-                    o3d_status s = o3d_lineset_get_array(nullptr, 0, &np, ls, O3D_LINESET_POINTS);
-                    if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
-                    pts.resize(np * 3);
-                    if ((s = o3d_lineset_get_array(pts.data(), np, &np, ls, O3D_LINESET_POINTS)) != O3D_OK) return s;
-                    s = o3d_lineset_get_array(nullptr, 0, &nc, ls, O3D_LINESET_COLORS);
-                    if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
-                    cols.resize(nc * 3);
-                    if ((s = o3d_lineset_get_array(cols.data(), nc, &nc, ls, O3D_LINESET_COLORS)) != O3D_OK) return s;
-                    s = o3d_lineset_get_index_array(nullptr, 0, &nl, ls, O3D_LINESET_LINES);
-                    if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
-                    lines.resize(nl * 2);
-                    return o3d_lineset_get_index_array(lines.data(), nl, &nl, ls, O3D_LINESET_LINES);
-                });
-                py::array_t<int32_t> l(std::vector<py::ssize_t>{(py::ssize_t)nl, 2});
-                if (nl) std::memcpy(l.mutable_data(), lines.data(), nl * 2 * sizeof(int32_t));
-                py::array p = np ? mat_to_array(pts.data(), np, 3) : py::array_t<double>(std::vector<py::ssize_t>{0, 3});
-                py::array c = nc ? mat_to_array(cols.data(), nc, 3) : py::array_t<double>(std::vector<py::ssize_t>{0, 3});
-                return py::make_tuple(p, l, c);
-            },
-            "Copies (points, lines, colors), not views.")
         .def_static(
             "create_from_point_cloud_correspondences",
             [](const PyPointCloud& cloud0, const PyPointCloud& cloud1, py::handle correspondences) {
@@ -202,7 +110,7 @@ void define_lineset(py::module_& m) {
                     std::shared_lock<std::shared_mutex> la(a->mutex);
                     std::shared_lock<std::shared_mutex> lb(b->mutex, std::defer_lock);
                     if (b != a) lb.lock();
-                    return o3d_lineset_create_from_point_cloud_correspondences(out, a->pc, b->pc, pairs.data(),
+                    return o3d_lineset_create_from_point_cloud_correspondences(out, a->p, b->p, pairs.data(),
                                                                                 pairs.size() / 2);
                 });
             },
@@ -232,6 +140,11 @@ void define_lineset(py::module_& m) {
                 return PyLineSet(out);
             },
             py::arg("mesh"), "The mesh's unique edges, each once, on its vertices.");
+    def_array(cls, "points", O3D_LINESET_POINTS, "(N, 3) float64 points (read-only view; assign to replace).", true);
+    def_array(cls, "colors", O3D_LINESET_COLORS, "(M, 3) float64 line colors in [0, 1] (read-only view).", true);
+    def_array(cls, "lines", O3D_LINESET_LINES, "(M, 2) int32 point indices (read-only view).", true);
+    def_has(cls, "has_colors", O3D_LINESET_COLORS);
+    def_array_access(cls);
 }
 
 }  // namespace o3dpy

@@ -36,7 +36,6 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_io_geometry(m);
     o::define_boundingbox(m);
     o::define_hull(m);
-    o::define_covariances(m);
     o::define_lineset(m);
     o::define_voxelgrid(m);
     o::define_octree(m);

@@ -37,7 +37,7 @@ void define_octree(py::module_& m) {
                 CloudPtr c = point_cloud.h;
                 locked_mut(self.h, [&](o3d_octree_t* o) {
                     std::shared_lock<std::shared_mutex> lock(c->mutex);
-                    return o3d_octree_convert_from_point_cloud(o, c->pc, size_expand);
+                    return o3d_octree_convert_from_point_cloud(o, c->p, size_expand);
                 });
             },
             py::arg("point_cloud"), py::arg("size_expand") = 0.01,

@@ -3,88 +3,28 @@
 #include <limits>
 #include <random>
 
-#include "common.h"
+#include "geometry_types.h"
 
 namespace o3dpy {
 
-PyPointCloud::PyPointCloud() {
-    o3d_pointcloud_t* pc = nullptr;
-    check(o3d_pointcloud_create(&pc));
-    h = adopt(pc);
-}
-
-CloudPtr PyPointCloud::for_resize() {
-    if (h.use_count() > 1) {
-        // numpy views (or another thread's call) share this handle: give this cloud a private copy
-        // so the old arrays stay valid for them.
-        o3d_pointcloud_t* copy = nullptr;
-        CloudPtr old = h;
-        with_const(old, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(&copy, pc); });
-        h = adopt(copy);
-    }
-    return h;
-}
+PyPointCloud::PyPointCloud() : Geom(nullptr) { check(o3d_pointcloud_create(&h->p)); }
 
 size_t PyPointCloud::size() const {
     size_t n = 0;
-    with_const(h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_size(&n, pc); });
+    locked_const(h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_size(&n, pc); });
     return n;
 }
 
 namespace {
 
-enum class Attr { Points, Normals, Colors };
-
 template <typename F>
 PyPointCloud derive(const CloudPtr& h, F&& f) {
     o3d_pointcloud_t* out = nullptr;
-    with_const(h, [&](const o3d_pointcloud_t* pc) { return f(&out, pc); });
+    locked_const(h, [&](const o3d_pointcloud_t* pc) { return f(&out, pc); });
     return PyPointCloud(adopt(out));
 }
 
 PyPointCloud& cloud(py::handle self) { return self.cast<PyPointCloud&>(); }
-
-py::array get_attr(PyPointCloud& self, Attr a) {
-    CloudPtr h = self.h;
-    double* data = nullptr;
-    size_t n = 0;
-    with_mut(h, [&](o3d_pointcloud_t* pc) {
-        return a == Attr::Points    ? o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_POINTS)
-               : a == Attr::Normals ? o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_NORMALS)
-                                    : o3d_pointcloud_array_mutable_view(&data, &n, pc, O3D_POINTCLOUD_COLORS);
-    });
-    return view_array(data, n, 3, keepalive(h), true);
-}
-
-void set_attr(PyPointCloud& self, Attr a, py::handle value) {
-    const char* what = a == Attr::Points ? "points" : a == Attr::Normals ? "normals" : "colors";
-    Rows3 r = as_rows3(value, what);
-    CloudPtr h = self.for_resize();
-    with_mut(h, [&](o3d_pointcloud_t* pc) {
-        if (r.f32) {
-            auto p = static_cast<const float*>(r.data());
-            return a == Attr::Points    ? o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_POINTS, p, r.n)
-                   : a == Attr::Normals ? o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_NORMALS, p, r.n)
-                                        : o3d_pointcloud_set_array_f32(pc, O3D_POINTCLOUD_COLORS, p, r.n);
-        }
-        auto p = static_cast<const double*>(r.data());
-        return a == Attr::Points    ? o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_POINTS, p, r.n)
-               : a == Attr::Normals ? o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_NORMALS, p, r.n)
-                                    : o3d_pointcloud_set_array(pc, O3D_POINTCLOUD_COLORS, p, r.n);
-    });
-}
-
-py::array vec3_array(const std::array<double, 3>& v) {
-    py::array_t<double> out(3);
-    std::memcpy(out.mutable_data(), v.data(), sizeof(v));
-    return std::move(out);
-}
-
-bool flag(const PyPointCloud& self, o3d_status (*fn)(const o3d_pointcloud_t*, int32_t*)) {
-    int32_t v = 0;
-    with_const(self.h, [&](const o3d_pointcloud_t* pc) { return fn(pc, &v); });
-    return v != 0;
-}
 
 std::vector<int32_t> as_indices(py::handle obj) {
     py::array a = py::array::ensure(obj);
@@ -108,7 +48,7 @@ std::vector<int32_t> as_indices(py::handle obj) {
 template <typename F>
 py::array distances(const CloudPtr& h, F&& f) {
     std::vector<double> out;
-    with_const(h, [&](const o3d_pointcloud_t* pc) {
+    locked_const(h, [&](const o3d_pointcloud_t* pc) {
         size_t n = 0;
         o3d_status s = o3d_pointcloud_size(&n, pc);
         if (s != O3D_OK) return s;
@@ -145,7 +85,7 @@ void define_pointcloud(py::module_& m) {
              py::arg("cloud"), "Deep copy of another cloud.")
         .def(py::init([](py::handle points) {
                  PyPointCloud pc;
-                 set_attr(pc, Attr::Points, points);
+                 array_set(pc, O3D_POINTCLOUD_POINTS, points, "points");
                  return pc;
              }),
              py::arg("points"), "A cloud with these (N, 3) points (float64 or float32).")
@@ -155,20 +95,7 @@ void define_pointcloud(py::module_& m) {
         .def("__deepcopy__", [](const PyPointCloud& self, py::handle) {
             return derive(self.h, [](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(out, pc); });
         })
-        .def_property(
-            "points", [](PyPointCloud& self) { return get_attr(self, Attr::Points); },
-            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Points, v); },
-            "(N, 3) float64 writable view; assign any (N, 3) float64/float32 array or Vector3dVector.")
-        .def_property(
-            "normals", [](PyPointCloud& self) { return get_attr(self, Attr::Normals); },
-            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Normals, v); }, "(N, 3) normals (view).")
-        .def_property(
-            "colors", [](PyPointCloud& self) { return get_attr(self, Attr::Colors); },
-            [](PyPointCloud& self, py::handle v) { set_attr(self, Attr::Colors, v); }, "(N, 3) RGB colors in [0, 1] (view).")
-        .def("has_points", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_points); })
-        .def("has_normals", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_normals); })
-        .def("has_colors", [](const PyPointCloud& self) { return flag(self, &o3d_pointcloud_has_colors); })
-        .def("is_empty", [](const PyPointCloud& self) { return !flag(self, &o3d_pointcloud_has_points); })
+        .def("is_empty", [](const PyPointCloud& self) { return !array_has<o3d_pointcloud_t>(self.h, O3D_POINTCLOUD_POINTS); })
         .def("__len__", &PyPointCloud::size)
         .def("__repr__", [](const PyPointCloud& self) {
             return "PointCloud with " + std::to_string(self.size()) + " points.";
@@ -176,7 +103,7 @@ void define_pointcloud(py::module_& m) {
         .def(
             "clear",
             [](py::object self) {
-                with_mut(cloud(self).for_resize(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_clear(pc); });
+                locked_mut(cloud(self).for_resize(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_clear(pc); });
                 return self;
             },
             "Remove every point, normal and color. Returns self.")
@@ -187,7 +114,7 @@ void define_pointcloud(py::module_& m) {
                 PyPointCloud& me = cloud(self);
                 if (src == me.h) {  // pcd += pcd: append a snapshot of itself
                     o3d_pointcloud_t* copy = nullptr;
-                    with_const(src, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(&copy, pc); });
+                    locked_const(src, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_clone(&copy, pc); });
                     src = adopt(copy);
                 }
                 CloudPtr dst = me.for_resize();
@@ -197,7 +124,7 @@ void define_pointcloud(py::module_& m) {
                     std::unique_lock<std::shared_mutex> l1(dst->mutex, std::defer_lock);
                     std::shared_lock<std::shared_mutex> l2(src->mutex, std::defer_lock);
                     std::lock(l1, l2);
-                    s = o3d_pointcloud_append(dst->pc, src->pc);
+                    s = o3d_pointcloud_append(dst->p, src->p);
                 }
                 check(s);
                 return self;
@@ -214,90 +141,17 @@ void define_pointcloud(py::module_& m) {
                 {
                     py::gil_scoped_release release;
                     std::shared_lock<std::shared_mutex> l2(src->mutex);
-                    s = o3d_pointcloud_append(out.h->pc, src->pc);
+                    s = o3d_pointcloud_append(out.h->p, src->p);
                 }
                 check(s);
                 return out;
             },
             py::arg("cloud"))
         .def(
-            "transform",
-            [](py::object self, py::handle T) {
-                auto t = as_mat4(T, "transformation");
-                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_transform(pc, t.data()); });
-                return self;
-            },
-            py::arg("transformation"), "Apply a 4x4 homogeneous transform (points and normals). Returns self.")
-        .def(
-            "translate",
-            [](py::object self, py::handle t, bool relative) {
-                auto v = as_vec3(t, "translation");
-                with_mut(cloud(self).for_inplace(),
-                         [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_translate(pc, v.data(), relative ? 1 : 0); });
-                return self;
-            },
-            py::arg("translation"), py::arg("relative") = true,
-            "relative=True: add translation; False: move the center to it. Returns self.")
-        .def(
-            "rotate",
-            [](py::object self, py::handle R, py::handle center) {
-                auto r = as_mat3(R, "R");
-                std::array<double, 3> c{};
-                bool has_center = !center.is_none();
-                if (has_center) c = as_vec3(center, "center");
-                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_rotate(pc, r.data(), has_center ? c.data() : nullptr);
-                });
-                return self;
-            },
-            py::arg("R"), py::arg("center") = py::none(),
-            "Rotate by the 3x3 matrix R about center (None: the cloud's center). Returns self.")
-        .def(
-            "scale",
-            [](py::object self, double scale, py::handle center) {
-                std::array<double, 3> c{};
-                bool has_center = !center.is_none();
-                if (has_center) c = as_vec3(center, "center");
-                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_scale(pc, scale, has_center ? c.data() : nullptr);
-                });
-                return self;
-            },
-            py::arg("scale"), py::arg("center") = py::none(), "Scale about center (None: the cloud's center). Returns self.")
-        .def("get_min_bound",
-             [](const PyPointCloud& self) {
-                 std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_min_bound(v.data(), pc); });
-                 return vec3_array(v);
-             })
-        .def("get_max_bound",
-             [](const PyPointCloud& self) {
-                 std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_max_bound(v.data(), pc); });
-                 return vec3_array(v);
-             })
-        .def("get_center",
-             [](const PyPointCloud& self) {
-                 std::array<double, 3> v{};
-                 with_const(self.h, [&](const o3d_pointcloud_t* pc) { return o3d_pointcloud_get_center(v.data(), pc); });
-                 return vec3_array(v);
-             })
-        .def(
-            "get_axis_aligned_bounding_box",
-            [](const PyPointCloud& self) {
-                std::array<double, 3> lo{}, hi{};
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_get_axis_aligned_bounding_box(lo.data(), hi.data(), pc);
-                });
-                py::object cls = py::module_::import("o3d.geometry").attr("AxisAlignedBoundingBox");
-                return cls(vec3_array(lo), vec3_array(hi));
-            },
-            "The axis-aligned bounding box (o3d.geometry.AxisAlignedBoundingBox).")
-        .def(
             "paint_uniform_color",
             [](py::object self, py::handle color) {
                 auto c = as_vec3(color, "color");
-                with_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_paint_uniform_color(pc, c.data()); });
+                locked_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_paint_uniform_color(pc, c.data()); });
                 return self;
             },
             py::arg("color"), "Set every color to the RGB color (each in [0, 1]). Returns self.")
@@ -314,7 +168,7 @@ void define_pointcloud(py::module_& m) {
         .def(
             "remove_non_finite_points",
             [](py::object self, bool remove_nan, bool remove_infinite) {
-                with_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) {
+                locked_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_remove_non_finite_points(pc, remove_nan ? 1 : 0, remove_infinite ? 1 : 0);
                 });
                 return self;
@@ -324,7 +178,7 @@ void define_pointcloud(py::module_& m) {
         .def(
             "normalize_normals",
             [](py::object self) {
-                with_mut(cloud(self).for_inplace(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_normalize_normals(pc); });
+                locked_mut(cloud(self).h, [](o3d_pointcloud_t* pc) { return o3d_pointcloud_normalize_normals(pc); });
                 return self;
             },
             "Scale every normal to unit length. Returns self.")
@@ -377,7 +231,7 @@ void define_pointcloud(py::module_& m) {
             "estimate_normals",
             [](py::object self, py::handle search_param, bool /*fast_normal_computation*/, int32_t num_threads) {
                 o3d_search_param_t p = to_search_param(search_param);
-                with_mut(cloud(self).for_resize(),
+                locked_mut(cloud(self).for_resize(),
                          [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_estimate_normals(pc, &p, num_threads); });
             },
             py::arg("search_param") = py::none(), py::arg("fast_normal_computation") = true, py::arg("num_threads") = 0,
@@ -387,7 +241,7 @@ void define_pointcloud(py::module_& m) {
             "orient_normals_to_align_with_direction",
             [](py::object self, py::handle direction) {
                 auto d = as_vec3(direction, "orientation_reference");
-                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                locked_mut(cloud(self).h, [&](o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_orient_normals_to_align_with_direction(pc, d.data());
                 });
             },
@@ -396,7 +250,7 @@ void define_pointcloud(py::module_& m) {
             "orient_normals_towards_camera_location",
             [](py::object self, py::handle location) {
                 auto c = as_vec3(location, "camera_location");
-                with_mut(cloud(self).for_inplace(), [&](o3d_pointcloud_t* pc) {
+                locked_mut(cloud(self).h, [&](o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_orient_normals_towards_camera_location(pc, c.data());
                 });
             },
@@ -416,45 +270,31 @@ void define_pointcloud(py::module_& m) {
                 return distances(self.h, [&](const o3d_pointcloud_t* pc, double* out, size_t cap, size_t* n) {
                     std::shared_lock<std::shared_mutex> lock(t->mutex, std::defer_lock);
                     if (t != self.h) lock.lock();
-                    return o3d_pointcloud_compute_point_cloud_distance(out, cap, n, pc, t->pc, num_threads);
+                    return o3d_pointcloud_compute_point_cloud_distance(out, cap, n, pc, t->p, num_threads);
                 });
             },
             py::arg("target"), py::arg("num_threads") = 0,
-            "For each point, the distance to the closest point of target, (N,) float64.")
-        .def(
-            "_points_copy",
-            [](const PyPointCloud& self, int which) {
-                // Copy-out path (o3d_pointcloud_get_*): a snapshot independent of the cloud.
-                std::vector<double> buf;
-                size_t n = 0;
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
-                    auto get = which == 0 ? &o3d_pointcloud_get_points
-                               : which == 1 ? &o3d_pointcloud_get_normals
-                                            : &o3d_pointcloud_get_colors;
-                    o3d_status s = get(pc, nullptr, 0, &n);
-                    if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) return s;
-                    buf.resize(n * 3);
-                    return get(pc, buf.data(), n, &n);
-                });
-                py::array_t<double> out(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
-                if (n) std::memcpy(out.mutable_data(), buf.data(), n * 3 * sizeof(double));
-                return out;
-            },
-            py::arg("which") = 0, "Copy of points (0), normals (1) or colors (2), not a view.")
-        .def(
-            "_readonly_view",
-            [](const PyPointCloud& self, int which) {
-                CloudPtr h = self.h;
-                const double* data = nullptr;
-                size_t n = 0;
-                with_const(h, [&](const o3d_pointcloud_t* pc) {
-                    return which == 0   ? o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_POINTS)
-                           : which == 1 ? o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_NORMALS)
-                                        : o3d_pointcloud_array_view(&data, &n, pc, O3D_POINTCLOUD_COLORS);
-                });
-                return view_array(data, n, 3, keepalive(h), false);
-            },
-            py::arg("which") = 0, "Read-only zero-copy view of points (0), normals (1) or colors (2).");
+            "For each point, the distance to the closest point of target, (N,) float64.");
+    def_array(cls, "points", O3D_POINTCLOUD_POINTS,
+              "(N, 3) float64 writable view; assign any (N, 3) float64/float32 array or Vector3dVector.");
+    def_array(cls, "normals", O3D_POINTCLOUD_NORMALS, "(N, 3) normals (view).");
+    def_array(cls, "colors", O3D_POINTCLOUD_COLORS, "(N, 3) RGB colors in [0, 1] (view).");
+    def_array(cls, "covariances", O3D_POINTCLOUD_COVARIANCES,
+              "(N, 3, 3) float64 per-point covariances: a read-only zero-copy view; assign an (N, 3, 3) array or "
+              "Matrix3dVector to replace them (each must be symmetric).", true);
+    def_has(cls, "has_points", O3D_POINTCLOUD_POINTS);
+    def_has(cls, "has_normals", O3D_POINTCLOUD_NORMALS);
+    def_has(cls, "has_colors", O3D_POINTCLOUD_COLORS);
+    def_has(cls, "has_covariances", O3D_POINTCLOUD_COVARIANCES);
+    def_array_access(cls);
+    O3DPY_DEF_SPATIAL(cls, pointcloud);
+    cls.def(
+        "estimate_covariances",
+        [](PyPointCloud& self, py::handle search_param) {
+            o3d_search_param_t p = to_search_param(search_param);
+            locked_mut(self.for_resize(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_estimate_covariances(pc, &p); });
+        },
+        py::arg("search_param") = py::none(), "Covariance of each point's neighbourhood (default KDTreeSearchParamKNN(30)).");
 }
 
 }  // namespace o3dpy

@@ -52,7 +52,7 @@ py::tuple outlier_filter(const PyPointCloud& self, F&& f) {
     o3d_pointcloud_t* out = nullptr;
     std::vector<int32_t> idx;
     size_t n = 0;
-    with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+    locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
         idx.resize(count_of(pc));  // the kept count never exceeds the cloud's size
         return f(&out, pc, idx.data(), idx.size(), &n);
     });
@@ -105,13 +105,13 @@ void define_pointcloud_tools(py::module_& m) {
                 o3d_pointcloud_t* out = nullptr;
                 if (is_obb(bounding_box)) {
                     o3d_obb_t obb = obb_of(bounding_box);
-                    with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                    locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                         return o3d_pointcloud_crop_obb(&out, pc, &obb, invert ? 1 : 0);
                     });
                     return PyPointCloud(adopt(out));
                 }
                 auto [lo, hi] = box_bounds(bounding_box);
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_crop_aabb(&out, pc, lo.data(), hi.data(), invert ? 1 : 0);
                 });
                 return PyPointCloud(adopt(out));
@@ -130,7 +130,7 @@ void define_pointcloud_tools(py::module_& m) {
                 std::array<double, 4> plane{};
                 std::vector<int32_t> idx;
                 size_t n = 0;
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     idx.resize(count_of(pc));
                     return o3d_pointcloud_segment_plane(plane.data(), idx.data(), idx.size(), &n, pc,
                                                         distance_threshold, rn, it, probability, s);
@@ -148,7 +148,7 @@ void define_pointcloud_tools(py::module_& m) {
                 const int32_t mp = to_int32(min_points, "min_points");
                 std::vector<int32_t> labels;
                 size_t n = 0;
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     labels.resize(count_of(pc));
                     return o3d_pointcloud_cluster_dbscan(labels.data(), labels.size(), &n, pc, eps, mp);
                 });
@@ -164,7 +164,7 @@ void define_pointcloud_tools(py::module_& m) {
             [](const PyPointCloud& self) {
                 std::array<double, 3> mean{};
                 std::array<double, 9> cov{};
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_compute_mean_and_covariance(mean.data(), cov.data(), pc);
                 });
                 py::array_t<double> c(std::vector<py::ssize_t>{3, 3});
@@ -178,7 +178,7 @@ void define_pointcloud_tools(py::module_& m) {
             [](const PyPointCloud& self) {
                 std::vector<double> d;
                 size_t n = 0;
-                with_const(self.h, [&](const o3d_pointcloud_t* pc) {
+                locked_const(self.h, [&](const o3d_pointcloud_t* pc) {
                     d.resize(count_of(pc));
                     return o3d_pointcloud_compute_mahalanobis_distance(d.data(), d.size(), &n, pc);
                 });

@@ -59,8 +59,7 @@ struct Summary {
 };
 
 o3d_global_optimization_options_t defaults() {
-    o3d_global_optimization_options_t o;
-    check(o3d_global_optimization_options_init(&o, sizeof(o)));
+    o3d_global_optimization_options_t o = init_of(&o3d_global_optimization_options_init);
     return o;
 }
 
@@ -102,8 +101,7 @@ std::array<double, 36> as_mat6(py::handle obj, const char* what) {
 }
 
 o3d_pose_graph_edge_t make_edge(int32_t s, int32_t t, py::handle T, py::handle info, bool uncertain, double confidence) {
-    o3d_pose_graph_edge_t e;
-    check(o3d_pose_graph_edge_init(&e, sizeof(e)));
+    o3d_pose_graph_edge_t e = init_of(&o3d_pose_graph_edge_init);
     e.source_node_id = s;
     e.target_node_id = t;
     if (!T.is_none()) {
@@ -233,8 +231,7 @@ void define_pose_graph(py::module_& m) {
              })
         .def("_get_edge",
              [](const PyPoseGraph& g, int64_t i) {
-                 o3d_pose_graph_edge_t e;
-                 check(o3d_pose_graph_edge_init(&e, sizeof(e)));
+                 o3d_pose_graph_edge_t e = init_of(&o3d_pose_graph_edge_init);
                  size_t k = as_index(i);
                  locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_edge(&e, p, k); });
                  return edge_tuple(e);

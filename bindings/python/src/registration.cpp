@@ -28,9 +28,8 @@ struct Symmetric : Estimation {
 };
 
 struct Criteria {
-    double relative_fitness = 1e-6;
-    double relative_rmse = 1e-6;
-    int32_t max_iteration = 30;
+    double relative_fitness, relative_rmse;
+    int32_t max_iteration;
 };
 
 py::array_t<double> identity4() {
@@ -56,15 +55,14 @@ void with_pair(const PyPointCloud& source, const PyPointCloud& target, F&& f) {
         SharedLocks locks;
         locks.add(a->mutex);
         locks.add(b->mutex);
-        s = f(a->pc, b->pc);
+        s = f(a->p, b->p);
     }
     check(s);
 }
 
 Result icp(const PyPointCloud& source, const PyPointCloud& target, double max_dist, py::handle init,
            py::handle estimation, py::handle criteria, py::object progress, int32_t num_threads) {
-    o3d_icp_options_t o;
-    check(o3d_icp_options_init(&o, sizeof(o)));
+    o3d_icp_options_t o = init_of(&o3d_icp_options_init);
     static const Estimation point_to_point;
     const Estimation& e = as_estimation(estimation, point_to_point);
     o.estimation = e.kind;
@@ -93,7 +91,7 @@ Result icp(const PyPointCloud& source, const PyPointCloud& target, double max_di
         SharedLocks locks;
         locks.add(a->mutex);
         locks.add(b->mutex);
-        s = o3d_register_icp(&raw, a->pc, b->pc, max_dist, T.data(), &o);
+        s = o3d_register_icp(&raw, a->p, b->p, max_dist, T.data(), &o);
     }
     ResultPtr r(raw, o3d_registration_result_destroy);
     ctx.rethrow();  // the callback's own exception (or KeyboardInterrupt)
@@ -225,6 +223,7 @@ void declare_registration(py::module_& m) {
 }
 
 void define_registration(py::module_& m) {
+    const o3d_icp_options_t dicp = init_of(&o3d_icp_options_init);
     define_robust_kernel(m);
     auto p2p = estimation_class<PointToPoint>(m, "TransformationEstimationPointToPoint");
     p2p.def(py::init([](bool with_scaling) {
@@ -260,7 +259,7 @@ void define_registration(py::module_& m) {
                  e.kernel = as_kernel(kernel);
                  return e;
              }),
-             py::arg("lambda_geometric") = 0.968, py::arg("kernel") = py::none(),
+             py::arg("lambda_geometric") = dicp.lambda_geometric, py::arg("kernel") = py::none(),
              "Colored ICP (Park et al. 2017): both clouds need colors, the target normals; lambda_geometric in [0, 1] "
              "weighs the geometric term against the photometric one.")
         .def(py::init([](const KernelPtr& kernel) {
@@ -283,7 +282,7 @@ void define_registration(py::module_& m) {
                 e.kernel = as_kernel(kernel);
                 return e;
             }),
-            py::arg("epsilon") = 1e-3, py::arg("kernel") = py::none(),
+            py::arg("epsilon") = dicp.epsilon, py::arg("kernel") = py::none(),
             "Generalized ICP (Segal et al. 2009); epsilon regularises the per-point covariances.")
         .def(py::init([](const KernelPtr& kernel) {
                  GeneralizedICP e;
@@ -310,8 +309,9 @@ void define_registration(py::module_& m) {
     def_kernel(sym);
 
     static_cast<py::class_<Criteria>>(m.attr("ICPConvergenceCriteria"))
-        .def(py::init([](double rf, double rr, int32_t it) { return Criteria{rf, rr, it}; }), py::arg("relative_fitness") = 1e-6,
-             py::arg("relative_rmse") = 1e-6, py::arg("max_iteration") = 30)
+        .def(py::init([](double rf, double rr, int32_t it) { return Criteria{rf, rr, it}; }),
+             py::arg("relative_fitness") = dicp.relative_fitness, py::arg("relative_rmse") = dicp.relative_rmse,
+             py::arg("max_iteration") = dicp.max_iteration)
         .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
         .def_readwrite("relative_fitness", &Criteria::relative_fitness)
         .def_readwrite("relative_rmse", &Criteria::relative_rmse)

@@ -27,8 +27,8 @@ struct NormalChecker : Checker {
 };
 
 struct RansacCriteria {
-    int32_t max_iteration = 100000;
-    double confidence = 0.999;
+    int32_t max_iteration;
+    double confidence;
 };
 
 /// FastGlobalRegistrationOption: the C options (minus threads/progress) plus an optional seed.
@@ -63,8 +63,7 @@ std::vector<o3d_correspondence_checker_t> as_checkers(py::handle checkers) {
 
 o3d_ransac_options_t ransac_options(py::handle estimation, int32_t ransac_n, py::handle criteria, py::handle seed,
                                     int32_t num_threads, Progress& progress) {
-    o3d_ransac_options_t o;
-    check(o3d_ransac_options_init(&o, sizeof(o)));
+    o3d_ransac_options_t o = init_of(&o3d_ransac_options_init);
     static const Estimation point_to_point;
     const Estimation& e = as_estimation(estimation, point_to_point);
     // The C call accepts point-to-point and point-to-plane (it rejects the others) and has no kernel: a robust
@@ -120,7 +119,7 @@ Result run_registration(const PyPointCloud& source, const PyPointCloud& target, 
         locks.add(b->mutex);
         if (fa) locks.add(fa->mutex);
         if (fb) locks.add(fb->mutex);
-        s = f(&raw, a->pc, b->pc, fa ? fa->p : nullptr, fb ? fb->p : nullptr);
+        s = f(&raw, a->p, b->p, fa ? fa->p : nullptr, fb ? fb->p : nullptr);
     }
     ResultPtr r(raw, o3d_registration_result_destroy);
     progress.rethrow();
@@ -199,6 +198,13 @@ void def_threshold(py::module_& m, const char* cls, const char* field, const cha
         .def("__repr__", [rf, name](const C& c) { return name + " with " + rf + "=" + fixed6(c.c.threshold); });
 }
 
+/// A read-write property over one field of the C options struct.
+template <typename F>
+void def_field(py::class_<FgrOption>& cls, const char* name, F o3d_fgr_options_t::*field) {
+    cls.def_property(
+        name, [field](const FgrOption& f) { return f.o.*field; }, [field](FgrOption& f, F v) { f.o.*field = v; });
+}
+
 }  // namespace
 
 void declare_registration_global(py::module_& m) {
@@ -216,6 +222,7 @@ void declare_registration_global(py::module_& m) {
 }
 
 void define_registration_global(py::module_& m) {
+    const o3d_ransac_options_t rd = init_of(&o3d_ransac_options_init);
     static_cast<py::class_<Checker>>(m.attr("CorrespondenceChecker"))
         .def_property_readonly(
             "require_pointcloud_alignment_", [](const Checker& c) { return c.require_alignment; },
@@ -236,7 +243,7 @@ void define_registration_global(py::module_& m) {
                     SharedLocks locks;
                     locks.add(a->mutex);
                     locks.add(b->mutex);
-                    s = o3d_correspondence_checker_check(&passed, &self.c, a->pc, b->pc, cp, n, T.data());
+                    s = o3d_correspondence_checker_check(&passed, &self.c, a->p, b->p, cp, n, T.data());
                 }
                 check(s);
                 return passed != 0;
@@ -254,8 +261,6 @@ void define_registration_global(py::module_& m) {
     def_threshold<NormalChecker>(m, "CorrespondenceCheckerBasedOnNormal", "normal_angle_threshold", "normal_threshold",
                                  py::arg("normal_angle_threshold"), "normal_angle_threshold in radians, > 0.");
 
-    o3d_ransac_options_t rd;
-    check(o3d_ransac_options_init(&rd, sizeof(rd)));
     static_cast<py::class_<RansacCriteria>>(m.attr("RANSACConvergenceCriteria"))
         .def(py::init([](int32_t max_iteration, double confidence) { return RansacCriteria{max_iteration, confidence}; }),
              py::arg("max_iteration") = rd.max_iteration, py::arg("confidence") = rd.confidence,
@@ -298,29 +303,6 @@ void define_registration_global(py::module_& m) {
              "(o3d.utility.random.seed), an int fixes the random tuples.")
         .def(py::init<const FgrOption&>(), py::arg("other"), "Copy constructor")
         .def_property(
-            "division_factor", [](const FgrOption& f) { return f.o.division_factor; },
-            [](FgrOption& f, double v) { f.o.division_factor = v; })
-        .def_property(
-            "use_absolute_scale", [](const FgrOption& f) { return f.o.use_absolute_scale != 0; },
-            [](FgrOption& f, bool v) { f.o.use_absolute_scale = v ? 1 : 0; })
-        .def_property(
-            "decrease_mu", [](const FgrOption& f) { return f.o.decrease_mu != 0; },
-            [](FgrOption& f, bool v) { f.o.decrease_mu = v ? 1 : 0; })
-        .def_property(
-            "maximum_correspondence_distance", [](const FgrOption& f) { return f.o.maximum_correspondence_distance; },
-            [](FgrOption& f, double v) { f.o.maximum_correspondence_distance = v; })
-        .def_property(
-            "iteration_number", [](const FgrOption& f) { return f.o.iteration_number; },
-            [](FgrOption& f, int32_t v) { f.o.iteration_number = v; })
-        .def_property(
-            "tuple_scale", [](const FgrOption& f) { return f.o.tuple_scale; }, [](FgrOption& f, double v) { f.o.tuple_scale = v; })
-        .def_property(
-            "maximum_tuple_count", [](const FgrOption& f) { return f.o.maximum_tuple_count; },
-            [](FgrOption& f, int32_t v) { f.o.maximum_tuple_count = v; })
-        .def_property(
-            "tuple_test", [](const FgrOption& f) { return f.o.tuple_test != 0; },
-            [](FgrOption& f, bool v) { f.o.tuple_test = v ? 1 : 0; })
-        .def_property(
             "seed", [](const FgrOption& f) { return f.seed; },
             [](FgrOption& f, py::object v) {
                 seed_fields(v);
@@ -336,15 +318,26 @@ void define_registration_global(py::module_& m) {
                    ",\nmaximum_tuple_count=" + std::to_string(f.o.maximum_tuple_count) + ",\ntuple_test=" + b(f.o.tuple_test) +
                    ",\n)";
         });
+    auto fgr = static_cast<py::class_<FgrOption>>(m.attr("FastGlobalRegistrationOption"));
+    def_field(fgr, "division_factor", &o3d_fgr_options_t::division_factor);
+    def_field(fgr, "maximum_correspondence_distance", &o3d_fgr_options_t::maximum_correspondence_distance);
+    def_field(fgr, "iteration_number", &o3d_fgr_options_t::iteration_number);
+    def_field(fgr, "tuple_scale", &o3d_fgr_options_t::tuple_scale);
+    def_field(fgr, "maximum_tuple_count", &o3d_fgr_options_t::maximum_tuple_count);
+    for (auto [name, flag] : {std::pair{"use_absolute_scale", &o3d_fgr_options_t::use_absolute_scale},
+                              {"decrease_mu", &o3d_fgr_options_t::decrease_mu}, {"tuple_test", &o3d_fgr_options_t::tuple_test}})
+        fgr.def_property(
+            name, [flag = flag](const FgrOption& f) { return f.o.*flag != 0; },
+            [flag = flag](FgrOption& f, bool v) { f.o.*flag = v ? 1 : 0; });
 
     m.def("_registration_ransac_based_on_feature_matching", &ransac_features, py::arg("source"), py::arg("target"),
           py::arg("source_feature"), py::arg("target_feature"), py::arg("mutual_filter"),
-          py::arg("max_correspondence_distance"), py::arg("estimation_method") = py::none(), py::arg("ransac_n") = 3,
+          py::arg("max_correspondence_distance"), py::arg("estimation_method") = py::none(), py::arg("ransac_n") = rd.ransac_n,
           py::arg("checkers") = py::none(), py::arg("criteria") = py::none(), py::arg("seed") = py::none(),
           py::arg("num_threads") = 0, py::arg("progress") = py::none());
     m.def("_registration_ransac_based_on_correspondence", &ransac_corres, py::arg("source"), py::arg("target"),
           py::arg("corres"), py::arg("max_correspondence_distance"), py::arg("estimation_method") = py::none(),
-          py::arg("ransac_n") = 3, py::arg("checkers") = py::none(), py::arg("criteria") = py::none(),
+          py::arg("ransac_n") = rd.ransac_n, py::arg("checkers") = py::none(), py::arg("criteria") = py::none(),
           py::arg("seed") = py::none(), py::arg("num_threads") = 0, py::arg("progress") = py::none());
     m.def("_registration_fgr_based_on_feature_matching", &fgr_features, py::arg("source"), py::arg("target"),
           py::arg("source_feature"), py::arg("target_feature"), py::arg("option") = py::none(),

@@ -17,11 +17,9 @@ using FeaturePtr = std::shared_ptr<FeatureHandle>;
 
 /// o3d.pipelines.registration.Feature. `data` is a zero-copy (dimension, num) view whose base keeps
 /// the handle alive; resize() first gives the feature a private copy while such views exist.
-struct PyFeature {
-    FeaturePtr h;
+struct PyFeature : Geom<o3d_feature_t> {
+    using Geom::Geom;
     PyFeature();
-    explicit PyFeature(o3d_feature_t* raw) : h(std::make_shared<FeatureHandle>(raw)) {}
-    FeaturePtr for_resize();
     size_t dimension() const;
     size_t num() const;
 };
@@ -30,7 +28,7 @@ struct PyFeature {
 /// that a kernel handed back to Python (estimation.kernel) keeps its Python class.
 struct RobustKernel {
     int32_t kind = O3D_KERNEL_L2;
-    double k = 1.0;
+    double k = init_of(&o3d_icp_options_init).kernel_k;
     RobustKernel() = default;
     RobustKernel(int32_t kind_, double k_) : kind(kind_), k(k_) {}
     virtual ~RobustKernel() = default;
@@ -63,8 +61,8 @@ struct Estimation {
     int32_t kind = O3D_ESTIMATION_POINT_TO_POINT;
     bool with_scaling = false;
     KernelPtr kernel = std::make_shared<L2Loss>();
-    double lambda_geometric = 0.968;
-    double epsilon = 1e-3;
+    double lambda_geometric = init_of(&o3d_icp_options_init).lambda_geometric;
+    double epsilon = init_of(&o3d_icp_options_init).epsilon;
 };
 
 /// RegistrationResult (a value: numpy arrays copied out of the C result).

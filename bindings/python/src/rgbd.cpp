@@ -48,6 +48,7 @@ bool extrinsic_arg(py::handle extrinsic, std::array<double, 16>& out) {
 }
 
 void define_rgbd_class(py::module_& m) {
+    const o3d_rgbd_options_t ro = init_of(&o3d_rgbd_options_init);
     py::class_<PyRGBDImage>(m, "RGBDImage",
                             "A color (or intensity) image and a float32 depth image in metres, of the same size.")
         .def(py::init([]() {
@@ -73,8 +74,7 @@ void define_rgbd_class(py::module_& m) {
             "create_from_color_and_depth",
             [](const PyImage& color, const PyImage& depth, double depth_scale, double depth_trunc,
                bool convert_rgb_to_intensity) {
-                o3d_rgbd_options_t o;
-                check(o3d_rgbd_options_init(&o, sizeof(o)));
+                o3d_rgbd_options_t o = init_of(&o3d_rgbd_options_init);
                 o.depth_scale = depth_scale;
                 o.depth_trunc = depth_trunc;
                 o.convert_rgb_to_intensity = convert_rgb_to_intensity ? 1 : 0;
@@ -84,8 +84,8 @@ void define_rgbd_class(py::module_& m) {
                 check(nogil([&] { return o3d_rgbd_image_create_from_color_and_depth(&out, c, d, &o); }));
                 return wrap(out);
             },
-            py::arg("color"), py::arg("depth"), py::arg("depth_scale") = 1000.0, py::arg("depth_trunc") = 3.0,
-            py::arg("convert_rgb_to_intensity") = true)
+            py::arg("color"), py::arg("depth"), py::arg("depth_scale") = ro.depth_scale, py::arg("depth_trunc") = ro.depth_trunc,
+            py::arg("convert_rgb_to_intensity") = ro.convert_rgb_to_intensity != 0)
         .def_static(
             "create_from_redwood_format",
             [](const PyImage& c, const PyImage& d, bool convert) { return from_dataset(O3D_RGBD_FORMAT_REDWOOD, c, d, convert); },
@@ -107,6 +107,7 @@ void define_rgbd_class(py::module_& m) {
 }  // namespace
 
 void define_rgbd(py::module_& m) {
+    const o3d_depth_to_cloud_options_t dc = init_of(&o3d_depth_to_cloud_options_init);
     define_rgbd_class(m);
     auto cloud = static_cast<py::class_<PyPointCloud>>(m.attr("PointCloud"));
     cloud
@@ -115,8 +116,7 @@ void define_rgbd(py::module_& m) {
             [](const PyImage& depth, const PyIntrinsic& intrinsic, py::handle extrinsic, double depth_scale,
                double depth_trunc, int64_t stride, bool project_valid_depth_only) {
                 if (stride < 1 || stride > INT32_MAX) invalid("stride must be >= 1");
-                o3d_depth_to_cloud_options_t o;
-                check(o3d_depth_to_cloud_options_init(&o, sizeof(o)));
+                o3d_depth_to_cloud_options_t o = init_of(&o3d_depth_to_cloud_options_init);
                 o.depth_scale = depth_scale;
                 o.depth_trunc = depth_trunc;
                 o.stride = (int32_t)stride;
@@ -131,8 +131,9 @@ void define_rgbd(py::module_& m) {
                 }));
                 return PyPointCloud(adopt(out));
             },
-            py::arg("depth"), py::arg("intrinsic"), py::arg("extrinsic") = py::none(), py::arg("depth_scale") = 1000.0,
-            py::arg("depth_trunc") = 1000.0, py::arg("stride") = 1, py::arg("project_valid_depth_only") = true,
+            py::arg("depth"), py::arg("intrinsic"), py::arg("extrinsic") = py::none(), py::arg("depth_scale") = dc.depth_scale,
+            py::arg("depth_trunc") = dc.depth_trunc, py::arg("stride") = dc.stride,
+            py::arg("project_valid_depth_only") = dc.project_valid_depth_only != 0,
             "Back-project a depth image (uint16 raw or float32 metres) through intrinsic, then to world "
             "coordinates with the inverse of extrinsic (world-to-camera; None: identity).")
         .def_static(

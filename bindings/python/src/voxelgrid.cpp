@@ -35,7 +35,7 @@ void define_voxelgrid(py::module_& m) {
            "create_from_point_cloud",
            [](const PyPointCloud& input, double voxel_size) {
                return make([&](o3d_voxelgrid_t** out) {
-                   with_const(input.h, [&](const o3d_pointcloud_t* pc) {
+                   locked_const(input.h, [&](const o3d_pointcloud_t* pc) {
                        return o3d_voxelgrid_create_from_point_cloud(out, pc, voxel_size);
                    });
                });
@@ -48,7 +48,7 @@ void define_voxelgrid(py::module_& m) {
                 auto lo = as_vec3(min_bound, "min_bound");
                 auto hi = as_vec3(max_bound, "max_bound");
                 return make([&](o3d_voxelgrid_t** out) {
-                    with_const(input.h, [&](const o3d_pointcloud_t* pc) {
+                    locked_const(input.h, [&](const o3d_pointcloud_t* pc) {
                         return o3d_voxelgrid_create_from_point_cloud_within_bounds(out, pc, voxel_size, lo.data(),
                                                                                    hi.data());
                     });
@@ -90,22 +90,13 @@ void define_voxelgrid(py::module_& m) {
         .def(
             "_get_voxel_arrays",
             [](const PyVoxelGrid& self) {
-                std::vector<int32_t> idx;
-                std::vector<double> col;
-                size_t n = 0;
-                locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                    o3d_status s = o3d_voxelgrid_num_voxels(&n, g);
-                    if (s != O3D_OK) return s;
-                    idx.resize(n * 3);
-                    col.resize(n * 3);
-                    return o3d_voxelgrid_get_voxels(idx.data(), col.data(), n, &n, g);
-                });
+                size_t n = num_voxels(self), got = 0;
                 py::array_t<int32_t> gi(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
                 py::array_t<double> co(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
-                if (n) {
-                    std::memcpy(gi.mutable_data(), idx.data(), n * 3 * sizeof(int32_t));
-                    std::memcpy(co.mutable_data(), col.data(), n * 3 * sizeof(double));
-                }
+                locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
+                    o3d_status s = o3d_voxelgrid_get_index_array(gi.mutable_data(), n, &got, g, O3D_VOXELGRID_GRID_INDEX);
+                    return s != O3D_OK ? s : o3d_voxelgrid_get_array(co.mutable_data(), n, &got, g, O3D_VOXELGRID_COLORS);
+                });
                 return py::make_tuple(gi, co);
             },
             "(grid_index (N, 3) int32, colors (N, 3) float64), sorted by grid index.")
@@ -126,8 +117,9 @@ void define_voxelgrid(py::module_& m) {
                 auto xyz = rows3_f64(queries, "queries");
                 const size_t n = (size_t)xyz.shape(0);
                 std::vector<int32_t> inc(n);
+                size_t got = 0;
                 locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                    return o3d_voxelgrid_check_if_included(inc.data(), g, n ? xyz.data() : nullptr, n);
+                    return o3d_voxelgrid_check_if_included(inc.data(), n, &got, g, n ? xyz.data() : nullptr, n);
                 });
                 py::list out(n);
                 for (size_t i = 0; i < n; ++i) out[i] = py::bool_(inc[i] != 0);

@@ -17,19 +17,17 @@ def test_default_empty():
 
 def test_set_get_roundtrip():
     pcd = make_cloud()
-    covs = np.random.default_rng(0).normal(size=(200, 3, 3))
+    asym = np.random.default_rng(0).normal(size=(200, 3, 3))
+    with pytest.raises(o3d.InvalidArgumentError, match="not symmetric"):  # covariances are symmetric
+        pcd.covariances = asym
+    assert not pcd.has_covariances()
+    covs = asym + asym.transpose(0, 2, 1)
     pcd.covariances = covs
     assert pcd.has_covariances()
-    view = np.asarray(pcd.covariances)  # not symmetric: a read-only copy
-    assert view.shape == (200, 3, 3) and np.array_equal(view, covs)
-    assert not view.flags.writeable
-    sym = covs + covs.transpose(0, 2, 1)
-    pcd.covariances = sym
-    zero_copy = np.asarray(pcd.covariances)
-    assert np.array_equal(zero_copy, sym) and not zero_copy.flags.writeable
-    assert zero_copy.base is not None and np.shares_memory(zero_copy, np.asarray(pcd.covariances))
-    pcd.covariances = covs
-    assert np.array_equal(pcd._covariances_copy(), covs)
+    view = np.asarray(pcd.covariances)
+    assert view.shape == (200, 3, 3) and np.array_equal(view, covs) and not view.flags.writeable
+    assert view.base is not None and np.shares_memory(view, np.asarray(pcd.covariances))  # zero-copy
+    assert np.array_equal(pcd._array_copy(3), covs)
     pcd.covariances = o3d.utility.Matrix3dVector(covs[::-1])
     assert np.array_equal(np.asarray(pcd.covariances), covs[::-1])
     assert np.array_equal(view, covs)  # the old view keeps the old data
@@ -40,6 +38,7 @@ def test_set_get_roundtrip():
 def test_follow_points():
     pcd = make_cloud()
     covs = np.arange(200 * 9, dtype=float).reshape(200, 3, 3)
+    covs = covs + covs.transpose(0, 2, 1)
     pcd.covariances = covs
     sub = pcd.select_by_index([3, 7])
     assert np.array_equal(np.asarray(sub.covariances), covs[[3, 7]])

@@ -31,7 +31,7 @@ def test_empty_and_constructor():
     lines = np.asarray(ls.lines)
     assert lines.dtype == np.int32 and lines.tolist() == [[0, 1], [1, 2], [2, 3], [3, 0]]
     assert np.asarray(ls.points)[2].tolist() == [1, 1, 0]
-    p, l, c = ls._copy_arrays()
+    p, l, c = (ls._array_copy(w) for w in (0, 100, 1))
     assert np.array_equal(p, np.asarray(ls.points)) and np.array_equal(l, lines) and c.shape == (0, 3)
 
 

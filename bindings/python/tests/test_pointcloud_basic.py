@@ -83,7 +83,7 @@ def test_points_setter_accepts_lists_and_ints():
 
 def test_copy_out_and_readonly_view(random_points):
     pcd = o3d.geometry.PointCloud(random_points)
-    snap = pcd._points_copy(0)
+    snap = pcd._array_copy(0)
     ro = pcd._readonly_view(0)
     assert not ro.flags.writeable
     np.testing.assert_array_equal(snap, random_points)

@@ -64,14 +64,17 @@ python_examples() {
   .venv/bin/python examples/python/multiway_registration.py "$O3D_TEST_DATA/livingroom1_clean_micro"
 }
 java_tests() { (cd bindings/java && mvn -B -ntp test -Do3d.native.dir="$ROOT/build/bindings/swig"); }
-rust_tests() { (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" cargo test 2>&1); }
+rust_tests() { (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" O3D_INCLUDE_DIR="$ROOT/capi/include" cargo test 2>&1); }
 rust_example() {
   local out; out=$(mktemp -d)
-  (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" cargo run -q --example figure1 -- \
-      "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply" &&
-   O3D_LIB_DIR="$ROOT/build/capi" cargo run -q --example global_registration -- \
+  (cd bindings/rust && export O3D_LIB_DIR="$ROOT/build/capi" O3D_INCLUDE_DIR="$ROOT/capi/include" &&
+   cargo run -q --example figure1 -- "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply" &&
+   cargo run -q --example global_registration -- \
       "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$O3D_TEST_DATA/open3d/Feature/cloud_bin_1.pcd")
 }
+# The crates as cargo packages them, used by a consumer outside the tree that finds libo3d through the
+# installed prefix's pkg-config only.
+rust_package() { local p; p=$(mktemp -d); cmake --install build --prefix "$p" >/dev/null && scripts/check_rust_package.sh "$p"; }
 
 step "build" build_main
 step "ctest: core, C API, dlopen, C++ wrapper, headers, examples, C#, Java smoke" ctest_main
@@ -86,6 +89,7 @@ step "python: examples" python_examples
 step "java: maven + junit" java_tests
 step "rust: cargo test" rust_tests
 step "rust: examples" rust_example
+step "rust: cargo package + consumer outside the tree" rust_package
 
 echo
 if [ $failed -gt 0 ]; then echo "failed suites: ${failed_steps[*]}"; fi

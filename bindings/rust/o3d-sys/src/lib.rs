@@ -1,7 +1,7 @@
-//! Raw FFI declarations for the o3d C API (`capi/include/o3d/*.h`, library `libo3d.so.0`).
+//! Raw FFI declarations for the o3d C API (headers `o3d/*.h`, library `libo3d.so.0`).
 //!
 //! Every `o3d_*` function and type and every `O3D_*` constant comes from the headers, read by
-//! bindgen in `build.rs` at build time (libclang; `O3D_INCLUDE_DIR` names the include folder). Macro
+//! bindgen in `build.rs` at build time (libclang; found by pkg-config or `O3D_INCLUDE_DIR`). Macro
 //! constants are `i32` like the C `int32_t` fields they fill, `size_t` is `usize`, structs keep the
 //! C names (`o3d_icp_options_t`). The safe wrapper is the `o3d` crate.
 //!

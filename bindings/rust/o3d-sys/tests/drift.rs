@@ -7,11 +7,9 @@ use std::path::PathBuf;
 
 const SOURCE: &str = include_str!(concat!(env!("OUT_DIR"), "/o3d_bindings.rs"));
 
+/// The include folder build.rs read (from `O3D_INCLUDE_DIR` or pkg-config).
 fn include_dir() -> PathBuf {
-    match std::env::var_os("O3D_INCLUDE_DIR") {
-        Some(dir) => PathBuf::from(dir),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../capi/include"),
-    }
+    PathBuf::from(env!("O3D_HEADER_DIR"))
 }
 
 /// The text of every `o3d/*.h` header, with comments removed.

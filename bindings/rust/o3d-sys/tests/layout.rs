@@ -308,10 +308,7 @@ fn layout_matches_hand_computed_lp64_values() {
 
 /// Compile and run a C program printing every expression of `rust_layout()`; None without a compiler.
 fn c_layout() -> Option<Vec<(String, usize)>> {
-    let include = match std::env::var_os("O3D_INCLUDE_DIR") {
-        Some(dir) => PathBuf::from(dir),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../capi/include"),
-    };
+    let include = PathBuf::from(env!("O3D_HEADER_DIR"));
     let dir = std::env::temp_dir().join(format!("o3d-sys-layout-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut src = String::from("#include <stdio.h>\n#include <stddef.h>\n#include \"o3d/o3d.h\"\nint main(void) {\n");

@@ -2,11 +2,9 @@
 //! check CI runs with grep over `bindings/rust/o3d/src`).
 use std::path::PathBuf;
 
+/// The headers o3d-sys read (its include folder, passed on as `DEP_O3D_INCLUDE_DIR`).
 fn header_dir() -> PathBuf {
-    match option_env!("O3D_HEADER_DIR") {
-        Some(dir) => PathBuf::from(dir).join("o3d"),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../capi/include/o3d"),
-    }
+    PathBuf::from(env!("O3D_HEADER_DIR")).join("o3d")
 }
 
 fn is_ident(c: char) -> bool {

@@ -12,20 +12,22 @@
 #define O3D_LIB_PATH "libo3d.so.0"
 #endif
 
-/* The entry points this program needs, resolved at run time. */
+/* The entry points this program needs, resolved at run time; their types come from the headers'
+ * declarations, so a signature change there cannot go unnoticed here. */
+#define API_FN(field, fn) __typeof__(&fn) field
 struct api {
-    const char* (*version)(void);
-    int32_t (*version_major)(void);
-    const char* (*last_error_message)(void);
-    const char* (*status_string)(o3d_status);
-    o3d_status (*read)(o3d_pointcloud_t**, const char*, const char*, const o3d_read_options_t*);
-    o3d_status (*write)(const char*, const o3d_pointcloud_t*, const char*, const o3d_write_options_t*);
-    o3d_status (*size)(const o3d_pointcloud_t*, size_t*);
-    o3d_status (*voxel_down_sample)(o3d_pointcloud_t**, const o3d_pointcloud_t*, double);
-    o3d_status (*search_param_init)(o3d_search_param_t*, uint32_t);
-    o3d_status (*estimate_normals)(o3d_pointcloud_t*, const o3d_search_param_t*, int32_t);
-    o3d_status (*has_normals)(const o3d_pointcloud_t*, int32_t*);
-    void (*destroy)(o3d_pointcloud_t*);
+    API_FN(version, o3d_version);
+    API_FN(version_major, o3d_version_major);
+    API_FN(last_error_message, o3d_last_error_message);
+    API_FN(status_string, o3d_status_string);
+    API_FN(read, o3d_io_read_point_cloud);
+    API_FN(write, o3d_io_write_point_cloud);
+    API_FN(size, o3d_pointcloud_size);
+    API_FN(voxel_down_sample, o3d_pointcloud_voxel_down_sample);
+    API_FN(search_param_init, o3d_search_param_init);
+    API_FN(estimate_normals, o3d_pointcloud_estimate_normals);
+    API_FN(has_array, o3d_pointcloud_has_array);
+    API_FN(destroy, o3d_pointcloud_destroy);
 };
 
 /* dlsym `name` into the function pointer at `slot`; 0 on failure. */
@@ -49,7 +51,7 @@ static int load_api(void* lib, struct api* api) {
            LOAD(lib, size, "o3d_pointcloud_size") && LOAD(lib, voxel_down_sample, "o3d_pointcloud_voxel_down_sample") &&
            LOAD(lib, search_param_init, "o3d_search_param_init") &&
            LOAD(lib, estimate_normals, "o3d_pointcloud_estimate_normals") &&
-           LOAD(lib, has_normals, "o3d_pointcloud_has_normals") && LOAD(lib, destroy, "o3d_pointcloud_destroy");
+           LOAD(lib, has_array, "o3d_pointcloud_has_array") && LOAD(lib, destroy, "o3d_pointcloud_destroy");
 }
 
 static int report(const struct api* api, const char* what, o3d_status status) {
@@ -65,11 +67,11 @@ static int run(const struct api* api, const char* in, const char* out) {
     o3d_status s;
     int rc = 1;
     if ((s = api->read(&cloud, in, NULL, NULL)) != O3D_OK) return report(api, "read", s);
-    if ((s = api->size(cloud, &n_in)) != O3D_OK) {
+    if ((s = api->size(&n_in, cloud)) != O3D_OK) {
         report(api, "size", s);
     } else if ((s = api->voxel_down_sample(&down, cloud, 0.05)) != O3D_OK) {
         report(api, "voxel_down_sample", s);
-    } else if ((s = api->size(down, &n_out)) != O3D_OK) {
+    } else if ((s = api->size(&n_out, down)) != O3D_OK) {
         report(api, "size", s);
     } else if ((s = api->search_param_init(&param, sizeof param)) != O3D_OK) {
         report(api, "search_param_init", s);
@@ -80,7 +82,7 @@ static int run(const struct api* api, const char* in, const char* out) {
         printf("voxel_down_sample(0.05): %zu -> %zu points\n", n_in, n_out);
         if ((s = api->estimate_normals(down, &param, 0)) != O3D_OK) {
             report(api, "estimate_normals", s);
-        } else if ((s = api->has_normals(down, &has_normals)) != O3D_OK) {
+        } else if ((s = api->has_array(&has_normals, down, O3D_POINTCLOUD_NORMALS)) != O3D_OK) {
             report(api, "has_normals", s);
         } else if ((s = api->write(out, down, NULL, NULL)) != O3D_OK) {
             report(api, "write", s);

@@ -132,3 +132,49 @@ TEST(PointCloud, NearestNeighborAndCloudDistances) {
     EXPECT_DOUBLE_EQ(d[1], std::sqrt(5.0));
     EXPECT_DOUBLE_EQ(d[2], std::sqrt(13.0));
 }
+
+TEST(PointCloud, GenericArrayAccessorChecksTheRowWidth) {
+    using A = o3dpp::PointCloudArray;
+    o3dpp::PointCloud pc;
+    pc.set_array(A::Points, std::vector<Vec3>{{1, 2, 3}, {4, 5, 6}});
+    EXPECT_TRUE(pc.has_array(A::Points));
+    EXPECT_FALSE(pc.has_array(A::Normals));
+    EXPECT_EQ(pc.array_shape(A::Points), (std::array<std::size_t, 2>{2, 3}));
+    EXPECT_EQ(pc.array_shape(A::Covariances)[1], 9u);
+    EXPECT_EQ(pc.get_array<double>(A::Points), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+    // Rows of the wrong width are refused before anything is copied.
+    EXPECT_O3D_ERROR(pc.get_array<o3dpp::Vec2>(A::Points), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(pc.set_array(A::Normals, std::vector<o3dpp::Mat3>(2)), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(pc.set_array(A::Normals, std::vector<double>{1, 2}), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_FALSE(pc.has_normals());
+    // Flat float values: whole rows, converted in the one copy.
+    pc.set_array(A::Normals, std::vector<float>{0, 0, 1, 0, 1, 0});
+    EXPECT_EQ(pc.get_normals()[1], (Vec3{0, 1, 0}));
+    const auto view = pc.array(A::Normals);
+    EXPECT_EQ(view.size(), 2u);
+    EXPECT_EQ(view.cols(), 3u);
+    EXPECT_EQ(view.flat().size(), 6u);
+}
+
+TEST(PointCloud, OptionDefaultsComeFromTheLibrary) {
+    o3d_search_param_t lib;
+    o3dpp::check(o3d_search_param_init(&lib, sizeof lib));
+    const o3dpp::SearchParam param;
+    EXPECT_EQ(static_cast<int32_t>(param.kind), lib.kind);
+    EXPECT_EQ(param.knn, lib.knn);
+    EXPECT_EQ(param.radius, lib.radius);
+    EXPECT_EQ(o3dpp::SearchParam::Radius(0.5).knn, lib.knn);
+    o3d_depth_to_cloud_options_t depth;
+    o3dpp::check(o3d_depth_to_cloud_options_init(&depth, sizeof depth));
+    const o3dpp::DepthToCloudOptions d;
+    EXPECT_EQ(d.depth_scale, depth.depth_scale);
+    EXPECT_EQ(d.depth_trunc, depth.depth_trunc);
+    EXPECT_EQ(d.stride, depth.stride);
+    EXPECT_EQ(d.project_valid_depth_only, depth.project_valid_depth_only != 0);
+    // to_c() carries every field over.
+    o3dpp::DepthToCloudOptions changed;
+    changed.stride = 3;
+    changed.project_valid_depth_only = false;
+    EXPECT_EQ(changed.to_c().stride, 3);
+    EXPECT_EQ(changed.to_c().project_valid_depth_only, 0);
+}

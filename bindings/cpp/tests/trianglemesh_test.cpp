@@ -267,3 +267,27 @@ TEST(TriangleMesh, KnotFromSharedData) {
     EXPECT_EQ(mesh.num_vertices(), 1440u);
     EXPECT_EQ(mesh.sample_points_uniformly(1000).size(), 1000u);
 }
+
+TEST(TriangleMesh, GenericArraysCoverIndexArrays) {
+    auto mesh = TriangleMesh::create_box();
+    EXPECT_EQ(mesh.array_shape(o3dpp::MeshArray::Triangles), (std::array<std::size_t, 2>{12, 3}));
+    EXPECT_EQ(mesh.get_array<Triangle>(o3dpp::MeshArray::Triangles), mesh.get_triangles());
+    EXPECT_EQ(mesh.get_array<int32_t>(o3dpp::MeshArray::Triangles).size(), 36u);
+    EXPECT_EQ(mesh.array<int32_t>(o3dpp::MeshArray::Triangles).cols(), 3u);
+    EXPECT_O3D_ERROR(mesh.get_array<o3dpp::Line>(o3dpp::MeshArray::Triangles), O3D_ERROR_INVALID_ARGUMENT);
+    // A float64 row type on an index array reaches the C call, which refuses it.
+    EXPECT_O3D_ERROR(mesh.get_array<Vec3>(o3dpp::MeshArray::Triangles), O3D_ERROR_INVALID_ARGUMENT);
+}
+
+TEST(TriangleMesh, MobiusUsesTheLibraryDefaults) {
+    o3d_mobius_options_t lib;
+    o3dpp::check(o3d_mobius_options_init(&lib, sizeof lib));
+    const o3dpp::MobiusOptions defaults;
+    EXPECT_EQ(defaults.length_split, lib.length_split);
+    EXPECT_EQ(defaults.twists, lib.twists);
+    const auto strip = TriangleMesh::create_mobius();
+    EXPECT_EQ(strip.num_vertices(), static_cast<std::size_t>(lib.length_split * lib.width_split));
+    o3dpp::MobiusOptions bad;
+    bad.length_split = 1;
+    EXPECT_O3D_ERROR(TriangleMesh::create_mobius(bad), O3D_ERROR_INVALID_ARGUMENT);
+}

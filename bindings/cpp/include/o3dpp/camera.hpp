@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "o3d/camera.h"
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
@@ -41,30 +42,13 @@ struct PinholeCameraParameters {
 };
 
 /// @brief o3d.camera.PinholeCameraTrajectory. Move-only.
-class CameraTrajectory {
+class CameraTrajectory : public Owner<CameraTrajectory, o3d_camera_trajectory_t, &o3d_camera_trajectory_destroy> {
 public:
-    CameraTrajectory() {
-        o3d_camera_trajectory_t* p = nullptr;
-        check(o3d_camera_trajectory_create(&p));
-        h_.reset(p);
-    }
+    CameraTrajectory() : Owner(make(&o3d_camera_trajectory_create)) {}
     /// @brief Take ownership of `owned` (must not be NULL).
-    explicit CameraTrajectory(o3d_camera_trajectory_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::CameraTrajectory: NULL handle");
-    }
-    CameraTrajectory(CameraTrajectory&&) noexcept = default;
-    CameraTrajectory& operator=(CameraTrajectory&&) noexcept = default;
-    CameraTrajectory(const CameraTrajectory&) = delete;
-    CameraTrajectory& operator=(const CameraTrajectory&) = delete;
+    explicit CameraTrajectory(o3d_camera_trajectory_t* owned) : Owner(owned) {}
 
-    o3d_camera_trajectory_t* get() const noexcept { return h_.get(); }
-    o3d_camera_trajectory_t* release() noexcept { return h_.release(); }
-
-    std::size_t size() const {
-        size_t n = 0;
-        check(o3d_camera_trajectory_size(&n, get()));
-        return n;
-    }
+    std::size_t size() const { return query(&o3d_camera_trajectory_size); }
     bool empty() const { return size() == 0; }
     /// @brief Pose `index` (out of range → Error).
     PinholeCameraParameters at(std::size_t index) const {
@@ -73,11 +57,7 @@ public:
         return p;
     }
     std::vector<PinholeCameraParameters> parameters() const {
-        std::vector<PinholeCameraParameters> out;
-        const std::size_t n = size();
-        out.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) out.push_back(at(i));
-        return out;
+        return detail::collect(size(), [&](std::size_t i) { return at(i); });
     }
     /// @brief Append a pose (extrinsic's last row must be 0 0 0 1).
     void push_back(const PinholeIntrinsic& intrinsic, const Mat4& extrinsic) {
@@ -85,9 +65,6 @@ public:
     }
     void push_back(const PinholeCameraParameters& p) { push_back(p.intrinsic, p.extrinsic); }
     void clear() { check(o3d_camera_trajectory_clear(get())); }
-
-private:
-    UniqueHandle<o3d_camera_trajectory_t, &o3d_camera_trajectory_destroy> h_;
 };
 
 }  // namespace o3dpp

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "o3d/common.h"
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
@@ -78,39 +79,27 @@ inline void set_num_threads(int num_threads) { check(o3d_set_num_threads(num_thr
 inline int get_num_threads() noexcept { return o3d_get_num_threads(); }
 
 /// @brief Owned bytes (an in-memory file).
-class Buffer {
+class Buffer : public Owner<Buffer, o3d_buffer_t, &o3d_buffer_destroy> {
 public:
+    /// @brief No buffer.
     Buffer() noexcept = default;
-    /// @brief Take ownership of `owned`.
-    explicit Buffer(o3d_buffer_t* owned) noexcept : h_(owned) {}
-    o3d_buffer_t* get() const noexcept { return h_.get(); }
-    o3d_buffer_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    /// @brief Take ownership of `owned` (must not be NULL).
+    explicit Buffer(o3d_buffer_t* owned) : Owner(owned) {}
 
     /// @brief Borrowed view of the bytes, valid while this Buffer lives.
     Span<const uint8_t> view() const {
         const uint8_t* data = nullptr;
         size_t size = 0;
-        check(o3d_buffer_view(&data, &size, h_.get()));
+        check(o3d_buffer_view(&data, &size, get()));
         return {data, size};
     }
     std::size_t size() const { return view().size(); }
     /// @brief Copy of the bytes.
-    std::vector<uint8_t> to_vector() const {
-        size_t n = 0;
-        check(o3d_buffer_get_data(nullptr, 0, &n, h_.get()));
-        std::vector<uint8_t> out(n);
-        check(o3d_buffer_get_data(out.data(), out.size(), &n, h_.get()));
-        out.resize(n);
-        return out;
-    }
+    std::vector<uint8_t> to_vector() const { return copy_out<uint8_t>(&o3d_buffer_get_data); }
     std::string to_string() const {
         auto v = view();
         return std::string(reinterpret_cast<const char*>(v.data()), v.size());
     }
-
-private:
-    UniqueHandle<o3d_buffer_t, &o3d_buffer_destroy> h_;
 };
 
 /// @brief Progress callback: gets a fraction in [0,1]; return false to cancel.
@@ -131,10 +120,19 @@ inline int32_t progress_trampoline(double fraction, void* user_data) noexcept {
         return 1;
     }
 }
-/// @brief check() for a call that ran with a progress context: a callback exception wins.
-inline void check_progress(o3d_status status, ProgressContext& ctx) {
+/// @brief Wire `progress` into the C options `c` (its progress and user_data fields), then run `call(&c)`.
+/// An exception the callback threw is rethrown here; otherwise the call's status is returned.
+template <typename COptions, typename Call>
+o3d_status with_progress(COptions c, const ProgressCallback& progress, Call&& call) {
+    ProgressContext ctx;
+    if (progress) {
+        ctx.callback = &progress;
+        c.progress = &progress_trampoline;
+        c.user_data = &ctx;
+    }
+    const o3d_status status = call(&c);
     if (ctx.error) std::rethrow_exception(ctx.error);
-    check(status);
+    return status;
 }
 }  // namespace detail
 

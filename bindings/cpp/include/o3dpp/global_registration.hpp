@@ -12,6 +12,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/feature.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/registration.hpp"
 #include "o3dpp/span.hpp"
@@ -22,18 +23,22 @@ namespace o3dpp {
 using Correspondences = std::vector<std::array<int32_t, 2>>;
 
 /// @brief Prunes RANSAC hypotheses early (Open3D's CorrespondenceChecker*). The threshold must be
-/// finite and positive.
+/// finite and positive; without one, the library's default for the kind (o3d_correspondence_checker_init).
 struct CorrespondenceChecker {
     enum class Kind : int32_t {
         EdgeLength = O3D_CHECKER_EDGE_LENGTH,  ///< similarity_threshold in (0, 1]
         Distance = O3D_CHECKER_DISTANCE,       ///< distance_threshold
         Normal = O3D_CHECKER_NORMAL            ///< normal_angle_threshold (radians); both clouds need normals
     };
-    Kind kind = Kind::EdgeLength;
-    double threshold = 0.9;
+    Kind kind;
+    double threshold;
 
-    /// @brief CorrespondenceCheckerBasedOnEdgeLength (Open3D default 0.9).
-    static CorrespondenceChecker EdgeLength(double similarity_threshold = 0.9) {
+    /// @brief The library's default checker of `kind`.
+    explicit CorrespondenceChecker(Kind k = Kind::EdgeLength) : kind(k), threshold(raw(k).threshold) {}
+    CorrespondenceChecker(Kind k, double t) : kind(k), threshold(t) {}
+    /// @brief CorrespondenceCheckerBasedOnEdgeLength.
+    static CorrespondenceChecker EdgeLength() { return CorrespondenceChecker(Kind::EdgeLength); }
+    static CorrespondenceChecker EdgeLength(double similarity_threshold) {
         return {Kind::EdgeLength, similarity_threshold};
     }
     /// @brief CorrespondenceCheckerBasedOnDistance.
@@ -43,10 +48,7 @@ struct CorrespondenceChecker {
         return {Kind::Normal, normal_angle_threshold};
     }
     /// @brief The library's default checker of `kind` (o3d_correspondence_checker_init).
-    static CorrespondenceChecker library_default(Kind kind) {
-        const o3d_correspondence_checker_t c = raw(kind);
-        return {kind, c.threshold};
-    }
+    static CorrespondenceChecker library_default(Kind kind) { return CorrespondenceChecker(kind); }
 
     o3d_correspondence_checker_t to_c() const {
         o3d_correspondence_checker_t c = raw(kind);
@@ -76,85 +78,69 @@ private:
 /// @brief Seed the global generator RANSAC and FGR draw from when given no seed. @see o3d.utility.random.seed
 inline void random_seed(uint64_t seed) { check(o3d_random_seed(seed)); }
 
-/// @brief RANSAC options (estimation, ransac_n, RANSACConvergenceCriteria, seed), Open3D defaults.
-struct RansacOptions {
-    Estimation estimation = Estimation::PointToPoint;  ///< PointToPoint or PointToPlane
-    bool with_scaling = false;
-    int ransac_n = 3;
-    int max_iteration = 100000;
-    double confidence = 0.999;
-    bool mutual_filter = false;  ///< feature matching only
+/// @brief RANSAC options (estimation, ransac_n, RANSACConvergenceCriteria, seed); defaults from
+/// o3d_ransac_options_init.
+struct RansacOptions : COptions<RansacOptions, o3d_ransac_options_t, &o3d_ransac_options_init> {
+    Estimation estimation;  ///< PointToPoint or PointToPlane
+    bool with_scaling;
+    int ransac_n;
+    int max_iteration;
+    double confidence;
+    bool mutual_filter;  ///< feature matching only
     /// @brief Draw from this seed; empty: take one from the global generator (random_seed()).
     /// The same seed gives the same result on any thread count.
     std::optional<uint64_t> seed;
-    int num_threads = 0;
+    int num_threads;
     /// @brief Fraction of max_iteration done (1 when confident); return false to cancel. An
     /// exception it throws cancels the call and is rethrown.
     ProgressCallback progress;
 
-    o3d_ransac_options_t to_c() const {
-        o3d_ransac_options_t c;
-        check(o3d_ransac_options_init(&c, sizeof c));
-        c.estimation = static_cast<int32_t>(estimation);
-        c.with_scaling = with_scaling ? 1 : 0;
-        c.ransac_n = ransac_n;
-        c.max_iteration = max_iteration;
-        c.confidence = confidence;
-        c.mutual_filter = mutual_filter ? 1 : 0;
-        c.use_seed = seed ? 1 : 0;
-        c.seed = seed.value_or(0);
-        c.num_threads = num_threads;
-        return c;
+    RansacOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.estimation, c.estimation);
+        f(s.with_scaling, c.with_scaling);
+        f(s.ransac_n, c.ransac_n);
+        f(s.max_iteration, c.max_iteration);
+        f(s.confidence, c.confidence);
+        f(s.mutual_filter, c.mutual_filter);
+        f(s.seed, c.use_seed, c.seed);
+        f(s.num_threads, c.num_threads);
     }
 };
 
-/// @brief FastGlobalRegistrationOption plus seed, threads and progress, Open3D defaults.
-struct FgrOptions {
-    double division_factor = 1.4;
-    bool use_absolute_scale = false;
-    bool decrease_mu = true;
-    double maximum_correspondence_distance = 0.025;
-    int iteration_number = 64;
-    double tuple_scale = 0.95;
-    int maximum_tuple_count = 1000;
-    bool tuple_test = true;
+/// @brief FastGlobalRegistrationOption plus seed, threads and progress; defaults from o3d_fgr_options_init.
+struct FgrOptions : COptions<FgrOptions, o3d_fgr_options_t, &o3d_fgr_options_init> {
+    double division_factor;
+    bool use_absolute_scale;
+    bool decrease_mu;
+    double maximum_correspondence_distance;
+    int iteration_number;
+    double tuple_scale;
+    int maximum_tuple_count;
+    bool tuple_test;
     std::optional<uint64_t> seed;  ///< as RansacOptions::seed
-    int num_threads = 0;
+    int num_threads;
     /// @brief Fraction of iteration_number done; return false to cancel.
     ProgressCallback progress;
 
-    o3d_fgr_options_t to_c() const {
-        o3d_fgr_options_t c;
-        check(o3d_fgr_options_init(&c, sizeof c));
-        c.division_factor = division_factor;
-        c.use_absolute_scale = use_absolute_scale ? 1 : 0;
-        c.decrease_mu = decrease_mu ? 1 : 0;
-        c.maximum_correspondence_distance = maximum_correspondence_distance;
-        c.iteration_number = iteration_number;
-        c.tuple_scale = tuple_scale;
-        c.maximum_tuple_count = maximum_tuple_count;
-        c.tuple_test = tuple_test ? 1 : 0;
-        c.use_seed = seed ? 1 : 0;
-        c.seed = seed.value_or(0);
-        c.num_threads = num_threads;
-        return c;
+    FgrOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.division_factor, c.division_factor);
+        f(s.use_absolute_scale, c.use_absolute_scale);
+        f(s.decrease_mu, c.decrease_mu);
+        f(s.maximum_correspondence_distance, c.maximum_correspondence_distance);
+        f(s.iteration_number, c.iteration_number);
+        f(s.tuple_scale, c.tuple_scale);
+        f(s.maximum_tuple_count, c.maximum_tuple_count);
+        f(s.tuple_test, c.tuple_test);
+        f(s.seed, c.use_seed, c.seed);
+        f(s.num_threads, c.num_threads);
     }
 };
 
 namespace detail {
-/// @brief Wire `progress` into a C options struct, run `call(&c)`, adopt the result.
-template <typename COptions, typename Call>
-RegistrationResult run_with_progress(COptions c, const ProgressCallback& progress, Call&& call) {
-    ProgressContext ctx;
-    if (progress) {
-        ctx.callback = &progress;
-        c.progress = &progress_trampoline;
-        c.user_data = &ctx;
-    }
-    o3d_registration_result_t* r = nullptr;
-    check_progress(call(&r, &c), ctx);
-    return RegistrationResult(r);
-}
 inline std::vector<o3d_correspondence_checker_t> to_c(const std::vector<CorrespondenceChecker>& checkers) {
     std::vector<o3d_correspondence_checker_t> out;
     out.reserve(checkers.size());
@@ -173,12 +159,11 @@ inline RegistrationResult registration_ransac_based_on_feature_matching(
     double max_correspondence_distance, const std::vector<CorrespondenceChecker>& checkers = {},
     const RansacOptions& options = {}) {
     const auto cs = detail::to_c(checkers);
-    return detail::run_with_progress(
-        options.to_c(), options.progress, [&](o3d_registration_result_t** out, const o3d_ransac_options_t* c) {
-            return o3d_register_ransac_based_on_feature_matching(out, source.get(), target.get(), source_feature.get(),
-                                                                 target_feature.get(), max_correspondence_distance,
-                                                                 cs.empty() ? nullptr : cs.data(), cs.size(), c);
-        });
+    return detail::register_with(options, [&](o3d_registration_result_t** out, const o3d_ransac_options_t* c) {
+        return o3d_register_ransac_based_on_feature_matching(out, source.get(), target.get(), source_feature.get(),
+                                                             target_feature.get(), max_correspondence_distance,
+                                                             cs.empty() ? nullptr : cs.data(), cs.size(), c);
+    });
 }
 
 /// @brief RANSAC over given (source, target) pairs (options.mutual_filter is ignored).
@@ -188,12 +173,11 @@ inline RegistrationResult registration_ransac_based_on_correspondence(
     double max_correspondence_distance, const std::vector<CorrespondenceChecker>& checkers = {},
     const RansacOptions& options = {}) {
     const auto cs = detail::to_c(checkers);
-    return detail::run_with_progress(
-        options.to_c(), options.progress, [&](o3d_registration_result_t** out, const o3d_ransac_options_t* c) {
-            return o3d_register_ransac_based_on_correspondence(out, source.get(), target.get(), detail::pairs(corres),
-                                                               corres.size(), max_correspondence_distance,
-                                                               cs.empty() ? nullptr : cs.data(), cs.size(), c);
-        });
+    return detail::register_with(options, [&](o3d_registration_result_t** out, const o3d_ransac_options_t* c) {
+        return o3d_register_ransac_based_on_correspondence(out, source.get(), target.get(), detail::pairs(corres),
+                                                           corres.size(), max_correspondence_distance,
+                                                           cs.empty() ? nullptr : cs.data(), cs.size(), c);
+    });
 }
 
 /// @brief Fast Global Registration (Zhou et al. 2016) on mutual feature matches.
@@ -203,11 +187,10 @@ inline RegistrationResult registration_fgr_based_on_feature_matching(const Point
                                                                      const Feature& source_feature,
                                                                      const Feature& target_feature,
                                                                      const FgrOptions& options = {}) {
-    return detail::run_with_progress(
-        options.to_c(), options.progress, [&](o3d_registration_result_t** out, const o3d_fgr_options_t* c) {
-            return o3d_register_fgr_based_on_feature_matching(out, source.get(), target.get(), source_feature.get(),
-                                                              target_feature.get(), c);
-        });
+    return detail::register_with(options, [&](o3d_registration_result_t** out, const o3d_fgr_options_t* c) {
+        return o3d_register_fgr_based_on_feature_matching(out, source.get(), target.get(), source_feature.get(),
+                                                          target_feature.get(), c);
+    });
 }
 
 /// @brief Fast Global Registration on given (source, target) pairs.
@@ -216,11 +199,10 @@ inline RegistrationResult registration_fgr_based_on_correspondence(const PointCl
                                                                    const PointCloud& target,
                                                                    const Correspondences& corres,
                                                                    const FgrOptions& options = {}) {
-    return detail::run_with_progress(
-        options.to_c(), options.progress, [&](o3d_registration_result_t** out, const o3d_fgr_options_t* c) {
-            return o3d_register_fgr_based_on_correspondence(out, source.get(), target.get(), detail::pairs(corres),
-                                                            corres.size(), c);
-        });
+    return detail::register_with(options, [&](o3d_registration_result_t** out, const o3d_fgr_options_t* c) {
+        return o3d_register_fgr_based_on_correspondence(out, source.get(), target.get(), detail::pairs(corres),
+                                                        corres.size(), c);
+    });
 }
 
 }  // namespace o3dpp

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "o3d/image.h"
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
@@ -27,25 +28,28 @@ enum class ImageFilter : int32_t {
 /// @brief How create_float_image makes color gray.
 enum class ImageConvert : int32_t { Equal = O3D_IMAGE_CONVERT_EQUAL, Weighted = O3D_IMAGE_CONVERT_WEIGHTED };
 
-class Image {
+/// @brief The array of an image: its pixel bytes (one byte a row).
+enum class ImageArray : int32_t { Data = O3D_IMAGE_DATA };
+namespace detail {
+using ImageArrayFns = ArrayFns<&o3d_image_has_array, &o3d_image_array_shape, &o3d_image_get_array,
+                               &o3d_image_array_view, &o3d_image_array_mutable_view, &o3d_image_set_array, nullptr>;
+}  // namespace detail
+
+class Image : public Owner<Image, o3d_image_t, &o3d_image_destroy>,
+              public Arrays<Image, ImageArray, detail::ImageArrayFns> {
 public:
     /// @brief Zero-filled image; bytes_per_channel 1 (uint8), 2 (uint16) or 4 (float32).
-    Image(int width, int height, int num_channels, int bytes_per_channel) {
-        o3d_image_t* p = nullptr;
-        check(o3d_image_create(&p, width, height, num_channels, bytes_per_channel));
-        h_.reset(p);
-    }
+    Image(int width, int height, int num_channels, int bytes_per_channel)
+        : Owner(make([&](o3d_image_t** o) {
+              return o3d_image_create(o, width, height, num_channels, bytes_per_channel);
+          })) {}
     /// @brief Take ownership of `owned` (must not be NULL).
-    explicit Image(o3d_image_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::Image: NULL handle");
-    }
+    explicit Image(o3d_image_t* owned) : Owner(owned) {}
     /// @brief Copy of `size` bytes of pixel data (exactly width * height * channels * bytes_per_channel).
     static Image from_data(int width, int height, int num_channels, int bytes_per_channel, const void* data,
                            std::size_t size) {
-        return adopt([&](o3d_image_t** o) {
-            return o3d_image_create_from_data(o, width, height, num_channels, bytes_per_channel,
-                                              static_cast<const uint8_t*>(data), size);
-        });
+        return create(&o3d_image_create_from_data, width, height, num_channels, bytes_per_channel,
+                      static_cast<const uint8_t*>(data), size);
     }
     /// @brief 1-channel image from width * height values of uint8_t, uint16_t or float.
     template <typename T>
@@ -55,17 +59,8 @@ public:
                          values.size() * sizeof(T));
     }
 
-    Image(Image&&) noexcept = default;
-    Image& operator=(Image&&) noexcept = default;
-    Image(const Image&) = delete;
-    Image& operator=(const Image&) = delete;
-
-    o3d_image_t* get() const noexcept { return h_.get(); }
-    o3d_image_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
-
     /// @brief Deep copy.
-    Image clone() const { return adopt([&](o3d_image_t** o) { return o3d_image_clone(o, get()); }); }
+    Image clone() const { return derive(&o3d_image_clone); }
 
     int width() const { return query(&o3d_image_width); }
     int height() const { return query(&o3d_image_height); }
@@ -73,27 +68,10 @@ public:
     int bytes_per_channel() const { return query(&o3d_image_bytes_per_channel); }
 
     /// @brief Borrowed pixel bytes: valid until the next mutating call or destruction.
-    Span<const uint8_t> data() const {
-        const uint8_t* d = nullptr;
-        size_t n = 0;
-        check(o3d_image_array_view(&d, &n, get(), O3D_IMAGE_DATA));
-        return {d, n};
-    }
-    Span<uint8_t> data_mutable() {
-        uint8_t* d = nullptr;
-        size_t n = 0;
-        check(o3d_image_array_mutable_view(&d, &n, get(), O3D_IMAGE_DATA));
-        return {d, n};
-    }
+    Span<const uint8_t> data() const { return array<uint8_t>(ImageArray::Data).flat(); }
+    Span<uint8_t> data_mutable() { return array_mutable<uint8_t>(ImageArray::Data).flat(); }
     /// @brief Copy of the pixel bytes.
-    std::vector<uint8_t> to_bytes() const {
-        size_t n = 0;
-        check(o3d_image_get_array(nullptr, 0, &n, get(), O3D_IMAGE_DATA));
-        std::vector<uint8_t> out(n);
-        check(o3d_image_get_array(out.data(), out.size(), &n, get(), O3D_IMAGE_DATA));
-        out.resize(n);
-        return out;
-    }
+    std::vector<uint8_t> to_bytes() const { return get_array<uint8_t>(ImageArray::Data); }
     /// @brief Copy of the values as T (sizeof(T) must equal bytes_per_channel).
     template <typename T>
     std::vector<T> to_values() const {
@@ -106,9 +84,7 @@ public:
     }
 
     /// @brief Filtered copy of a 1-channel float image.
-    Image filter(ImageFilter type) const {
-        return adopt([&](o3d_image_t** o) { return o3d_image_filter(o, get(), static_cast<int32_t>(type)); });
-    }
+    Image filter(ImageFilter type) const { return derive(&o3d_image_filter, static_cast<int32_t>(type)); }
     /// @brief Open3D's create_pyramid: level 0 is a copy, each next level the previous one (Gaussian3
     /// filtered when asked) downsampled by 2. 1-channel float32 input.
     std::vector<Image> create_pyramid(int num_of_levels, bool with_gaussian_filter = true) const {
@@ -124,39 +100,17 @@ public:
         return levels;
     }
     /// @brief Half-size float image of 2x2 means.
-    Image downsample() const { return adopt([&](o3d_image_t** o) { return o3d_image_downsample(o, get()); }); }
-    Image flip_vertical() const { return adopt([&](o3d_image_t** o) { return o3d_image_flip_vertical(o, get()); }); }
-    Image flip_horizontal() const {
-        return adopt([&](o3d_image_t** o) { return o3d_image_flip_horizontal(o, get()); });
-    }
+    Image downsample() const { return derive(&o3d_image_downsample); }
+    Image flip_vertical() const { return derive(&o3d_image_flip_vertical); }
+    Image flip_horizontal() const { return derive(&o3d_image_flip_horizontal); }
     /// @brief 1-channel float copy (8-bit scaled to [0,1]).
     Image create_float_image(ImageConvert convert = ImageConvert::Weighted) const {
-        return adopt(
-            [&](o3d_image_t** o) { return o3d_image_create_float_image(o, get(), static_cast<int32_t>(convert)); });
+        return derive(&o3d_image_create_float_image, static_cast<int32_t>(convert));
     }
     /// @brief Depth in metres: raw / depth_scale, beyond depth_trunc set to 0.
     Image convert_depth_to_float(double depth_scale = 1000.0, double depth_trunc = 3.0) const {
-        return adopt([&](o3d_image_t** o) {
-            return o3d_image_convert_depth_to_float(o, get(), depth_scale, depth_trunc);
-        });
+        return derive(&o3d_image_convert_depth_to_float, depth_scale, depth_trunc);
     }
-
-    /// @brief Run `create(o3d_image_t**)` and own what it returns.
-    template <typename F>
-    static Image adopt(F&& create) {
-        o3d_image_t* p = nullptr;
-        check(create(&p));
-        return Image(p);
-    }
-
-private:
-    int query(o3d_status (*fn)(const o3d_image_t*, int32_t*)) const {
-        int32_t v = 0;
-        check(fn(get(), &v));
-        return v;
-    }
-
-    UniqueHandle<o3d_image_t, &o3d_image_destroy> h_;
 };
 
 }  // namespace o3dpp

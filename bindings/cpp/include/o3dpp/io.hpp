@@ -11,36 +11,35 @@
 #include "o3dpp/error.hpp"
 #include "o3dpp/camera.hpp"
 #include "o3dpp/image.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/trianglemesh.hpp"
 
 namespace o3dpp {
 
-/// @brief o3d.io.read_point_cloud keyword arguments.
-struct ReadOptions {
-    bool remove_nan_points = false;
-    bool remove_infinite_points = false;
+/// @brief o3d.io.read_point_cloud keyword arguments; defaults from o3d_read_options_init.
+struct ReadOptions : COptions<ReadOptions, o3d_read_options_t, &o3d_read_options_init> {
+    bool remove_nan_points;
+    bool remove_infinite_points;
 
-    o3d_read_options_t to_c() const {
-        o3d_read_options_t c;
-        check(o3d_read_options_init(&c, sizeof c));
-        c.remove_nan_points = remove_nan_points ? 1 : 0;
-        c.remove_infinite_points = remove_infinite_points ? 1 : 0;
-        return c;
+    ReadOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.remove_nan_points, c.remove_nan_points);
+        f(s.remove_infinite_points, c.remove_infinite_points);
     }
 };
 
-/// @brief o3d.io.write_point_cloud keyword arguments.
-struct WriteOptions {
-    bool write_ascii = false;
-    bool compressed = false;
+/// @brief o3d.io.write_point_cloud keyword arguments; defaults from o3d_write_options_init.
+struct WriteOptions : COptions<WriteOptions, o3d_write_options_t, &o3d_write_options_init> {
+    bool write_ascii;
+    bool compressed;
 
-    o3d_write_options_t to_c() const {
-        o3d_write_options_t c;
-        check(o3d_write_options_init(&c, sizeof c));
-        c.write_ascii = write_ascii ? 1 : 0;
-        c.compressed = compressed ? 1 : 0;
-        return c;
+    WriteOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.write_ascii, c.write_ascii);
+        f(s.compressed, c.compressed);
     }
 };
 
@@ -48,8 +47,7 @@ struct WriteOptions {
 inline PointCloud read_point_cloud(const std::string& path, const std::string& format = "",
                                    const ReadOptions& options = {}) {
     const o3d_read_options_t c = options.to_c();
-    return PointCloud::adopt(
-        [&](o3d_pointcloud_t** o) { return o3d_io_read_point_cloud(o, path.c_str(), format.c_str(), &c); });
+    return PointCloud::create(&o3d_io_read_point_cloud, path.c_str(), format.c_str(), &c);
 }
 
 inline void write_point_cloud(const std::string& path, const PointCloud& cloud, const std::string& format = "",
@@ -62,9 +60,7 @@ inline void write_point_cloud(const std::string& path, const PointCloud& cloud, 
 inline PointCloud read_point_cloud_from_memory(const uint8_t* data, std::size_t size, const std::string& format,
                                                const ReadOptions& options = {}) {
     const o3d_read_options_t c = options.to_c();
-    return PointCloud::adopt([&](o3d_pointcloud_t** o) {
-        return o3d_io_read_point_cloud_from_memory(o, data, size, format.c_str(), &c);
-    });
+    return PointCloud::create(&o3d_io_read_point_cloud_from_memory, data, size, format.c_str(), &c);
 }
 inline PointCloud read_point_cloud_from_memory(const std::vector<uint8_t>& bytes, const std::string& format,
                                                const ReadOptions& options = {}) {
@@ -80,42 +76,38 @@ inline PointCloud read_point_cloud_from_memory(const std::string& bytes, const s
 inline Buffer write_point_cloud_to_memory(const PointCloud& cloud, const std::string& format,
                                           const WriteOptions& options = {}) {
     const o3d_write_options_t c = options.to_c();
-    o3d_buffer_t* b = nullptr;
-    check(o3d_io_write_point_cloud_to_memory(&b, cloud.get(), format.c_str(), &c));
-    return Buffer(b);
+    return Buffer::create(&o3d_io_write_point_cloud_to_memory, cloud.get(), format.c_str(), &c);
 }
 
 // ---- triangle meshes: "ply", "obj", "stl", "off", "gltf", "glb" ----
 
-/// @brief o3d.io.read_triangle_mesh keyword arguments.
-struct MeshReadOptions {
-    bool enable_post_processing = false;
+/// @brief o3d.io.read_triangle_mesh keyword arguments; defaults from o3d_mesh_read_options_init.
+struct MeshReadOptions : COptions<MeshReadOptions, o3d_mesh_read_options_t, &o3d_mesh_read_options_init> {
+    bool enable_post_processing;
 
-    o3d_mesh_read_options_t to_c() const {
-        o3d_mesh_read_options_t c;
-        check(o3d_mesh_read_options_init(&c, sizeof c));
-        c.enable_post_processing = enable_post_processing ? 1 : 0;
-        return c;
+    MeshReadOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.enable_post_processing, c.enable_post_processing);
     }
 };
 
-/// @brief o3d.io.write_triangle_mesh keyword arguments.
-struct MeshWriteOptions {
-    bool write_ascii = false;
-    bool compressed = false;  ///< accepted for Open3D compatibility; no format here compresses
-    bool write_vertex_normals = true;
-    bool write_vertex_colors = true;
-    bool write_triangle_uvs = true;
+/// @brief o3d.io.write_triangle_mesh keyword arguments; defaults from o3d_mesh_write_options_init.
+struct MeshWriteOptions : COptions<MeshWriteOptions, o3d_mesh_write_options_t, &o3d_mesh_write_options_init> {
+    bool write_ascii;
+    bool compressed;  ///< accepted for Open3D compatibility; no format here compresses
+    bool write_vertex_normals;
+    bool write_vertex_colors;
+    bool write_triangle_uvs;
 
-    o3d_mesh_write_options_t to_c() const {
-        o3d_mesh_write_options_t c;
-        check(o3d_mesh_write_options_init(&c, sizeof c));
-        c.write_ascii = write_ascii ? 1 : 0;
-        c.compressed = compressed ? 1 : 0;
-        c.write_vertex_normals = write_vertex_normals ? 1 : 0;
-        c.write_vertex_colors = write_vertex_colors ? 1 : 0;
-        c.write_triangle_uvs = write_triangle_uvs ? 1 : 0;
-        return c;
+    MeshWriteOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.write_ascii, c.write_ascii);
+        f(s.compressed, c.compressed);
+        f(s.write_vertex_normals, c.write_vertex_normals);
+        f(s.write_vertex_colors, c.write_vertex_colors);
+        f(s.write_triangle_uvs, c.write_triangle_uvs);
     }
 };
 
@@ -123,8 +115,7 @@ struct MeshWriteOptions {
 inline TriangleMesh read_triangle_mesh(const std::string& path, const std::string& format = "",
                                        const MeshReadOptions& options = {}) {
     const o3d_mesh_read_options_t c = options.to_c();
-    return TriangleMesh::adopt(
-        [&](o3d_trianglemesh_t** o) { return o3d_io_read_triangle_mesh(o, path.c_str(), format.c_str(), &c); });
+    return TriangleMesh::create(&o3d_io_read_triangle_mesh, path.c_str(), format.c_str(), &c);
 }
 
 inline void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh, const std::string& format = "",
@@ -137,9 +128,7 @@ inline void write_triangle_mesh(const std::string& path, const TriangleMesh& mes
 inline TriangleMesh read_triangle_mesh_from_memory(const uint8_t* data, std::size_t size, const std::string& format,
                                                    const MeshReadOptions& options = {}) {
     const o3d_mesh_read_options_t c = options.to_c();
-    return TriangleMesh::adopt([&](o3d_trianglemesh_t** o) {
-        return o3d_io_read_triangle_mesh_from_memory(o, data, size, format.c_str(), &c);
-    });
+    return TriangleMesh::create(&o3d_io_read_triangle_mesh_from_memory, data, size, format.c_str(), &c);
 }
 inline TriangleMesh read_triangle_mesh_from_memory(const std::vector<uint8_t>& bytes, const std::string& format,
                                                    const MeshReadOptions& options = {}) {
@@ -150,16 +139,14 @@ inline TriangleMesh read_triangle_mesh_from_memory(const std::vector<uint8_t>& b
 inline Buffer write_triangle_mesh_to_memory(const TriangleMesh& mesh, const std::string& format,
                                             const MeshWriteOptions& options = {}) {
     const o3d_mesh_write_options_t c = options.to_c();
-    o3d_buffer_t* b = nullptr;
-    check(o3d_io_write_triangle_mesh_to_memory(&b, mesh.get(), format.c_str(), &c));
-    return Buffer(b);
+    return Buffer::create(&o3d_io_write_triangle_mesh_to_memory, mesh.get(), format.c_str(), &c);
 }
 
 // ---- images: "png", "jpg"/"jpeg", "ppm", "pgm" ----
 
 /// @brief Read an image; an empty `format` means: from the extension.
 inline Image read_image(const std::string& path, const std::string& format = "") {
-    return Image::adopt([&](o3d_image_t** o) { return o3d_io_read_image(o, path.c_str(), format.c_str()); });
+    return Image::create(&o3d_io_read_image, path.c_str(), format.c_str());
 }
 /// @brief Write an image; `quality` is the JPEG quality 1..100 (-1: 90), ignored by other formats.
 inline void write_image(const std::string& path, const Image& image, const std::string& format = "",
@@ -167,15 +154,13 @@ inline void write_image(const std::string& path, const Image& image, const std::
     check(o3d_io_write_image(path.c_str(), image.get(), format.c_str(), quality));
 }
 inline Image read_image_from_memory(const uint8_t* data, std::size_t size, const std::string& format) {
-    return Image::adopt([&](o3d_image_t** o) { return o3d_io_read_image_from_memory(o, data, size, format.c_str()); });
+    return Image::create(&o3d_io_read_image_from_memory, data, size, format.c_str());
 }
 inline Image read_image_from_memory(const std::vector<uint8_t>& bytes, const std::string& format) {
     return read_image_from_memory(bytes.data(), bytes.size(), format);
 }
 inline Buffer write_image_to_memory(const Image& image, const std::string& format, int quality = -1) {
-    o3d_buffer_t* b = nullptr;
-    check(o3d_io_write_image_to_memory(&b, image.get(), format.c_str(), quality));
-    return Buffer(b);
+    return Buffer::create(&o3d_io_write_image_to_memory, image.get(), format.c_str(), quality);
 }
 
 // ---- camera models (Open3D's JSON layouts; trajectories also as .log) ----
@@ -198,9 +183,7 @@ inline void write_pinhole_camera_parameters(const std::string& path, const Pinho
 }
 /// @brief Read a trajectory: "json" or "log"; empty: from the extension.
 inline CameraTrajectory read_pinhole_camera_trajectory(const std::string& path, const std::string& format = "") {
-    o3d_camera_trajectory_t* t = nullptr;
-    check(o3d_io_read_pinhole_camera_trajectory(&t, path.c_str(), format.c_str()));
-    return CameraTrajectory(t);
+    return CameraTrajectory::create(&o3d_io_read_pinhole_camera_trajectory, path.c_str(), format.c_str());
 }
 inline void write_pinhole_camera_trajectory(const std::string& path, const CameraTrajectory& trajectory,
                                             const std::string& format = "") {

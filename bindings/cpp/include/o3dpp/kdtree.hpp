@@ -6,10 +6,12 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "o3d/feature.h"
 #include "o3d/kdtree.h"
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/feature.hpp"
 #include "o3dpp/handle.hpp"
@@ -20,55 +22,27 @@ namespace o3dpp {
 
 /// @brief Result of a batch search: for query i, neighbours offsets()[i] .. offsets()[i+1]-1,
 /// sorted by increasing distance. Move-only; independent of the tree it came from.
-class SearchResult {
+class SearchResult : public Owner<SearchResult, o3d_search_result_t, &o3d_search_result_destroy> {
 public:
-    explicit SearchResult(o3d_search_result_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::SearchResult: NULL handle");
-    }
-    o3d_search_result_t* get() const noexcept { return h_.get(); }
-    o3d_search_result_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    explicit SearchResult(o3d_search_result_t* owned) : Owner(owned) {}
 
     std::size_t num_queries() const { return counts()[0]; }
     /// @brief Neighbours over all queries.
     std::size_t total() const { return counts()[1]; }
 
     // Borrowed views, valid while this SearchResult lives.
-    Span<const int64_t> offsets() const {
-        View v = view();
-        return {v.offsets, num_queries() + 1};
-    }
+    Span<const int64_t> offsets() const { return {view().offsets, num_queries() + 1}; }
     Span<const int32_t> indices() const { return {view().indices, total()}; }
     Span<const double> distances2() const { return {view().distances2, total()}; }
     /// @brief Neighbour indices of query `i`.
-    Span<const int32_t> indices(std::size_t i) const {
-        View v = view();
-        check_query(i);
-        return {v.indices + v.offsets[i], static_cast<std::size_t>(v.offsets[i + 1] - v.offsets[i])};
-    }
+    Span<const int32_t> indices(std::size_t i) const { return of_query(i, view().indices); }
     /// @brief Squared neighbour distances of query `i`.
-    Span<const double> distances2(std::size_t i) const {
-        View v = view();
-        check_query(i);
-        return {v.distances2 + v.offsets[i], static_cast<std::size_t>(v.offsets[i + 1] - v.offsets[i])};
-    }
+    Span<const double> distances2(std::size_t i) const { return of_query(i, view().distances2); }
 
     // Copies.
-    std::vector<int64_t> get_offsets() const {
-        std::vector<int64_t> out(num_queries() + 1);
-        check(o3d_search_result_get_offsets(out.data(), out.size(), get()));
-        return out;
-    }
-    std::vector<int32_t> get_indices() const {
-        std::vector<int32_t> out(total());
-        check(o3d_search_result_get_indices(out.data(), out.size(), get()));
-        return out;
-    }
-    std::vector<double> get_distances2() const {
-        std::vector<double> out(total());
-        check(o3d_search_result_get_distances2(out.data(), out.size(), get()));
-        return out;
-    }
+    std::vector<int64_t> get_offsets() const { return copy_out<int64_t>(&o3d_search_result_get_offsets); }
+    std::vector<int32_t> get_indices() const { return copy_out<int32_t>(&o3d_search_result_get_indices); }
+    std::vector<double> get_distances2() const { return copy_out<double>(&o3d_search_result_get_distances2); }
 
 private:
     struct View {
@@ -86,70 +60,54 @@ private:
         check(o3d_search_result_view(&v.offsets, &v.indices, &v.distances2, get()));
         return v;
     }
-    void check_query(std::size_t i) const {
-        if (i >= num_queries()) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::SearchResult: query index out of range");
+    /// @brief The part of `values` (indices or distances) that belongs to query `i`.
+    template <typename T>
+    Span<const T> of_query(std::size_t i, const T* values) const {
+        if (i >= num_queries())
+            throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::SearchResult: query index out of range");
+        const int64_t* offsets = view().offsets;
+        return {values + offsets[i], static_cast<std::size_t>(offsets[i + 1] - offsets[i])};
     }
-
-    UniqueHandle<o3d_search_result_t, &o3d_search_result_destroy> h_;
 };
 
 /// @brief KD-tree over 3-D points, or over points of any dimension (a Feature, from_points_xd).
 /// Copies them: independent of its source. Move-only.
-class KDTreeFlann {
+class KDTreeFlann : public Owner<KDTreeFlann, o3d_kdtree_t, &o3d_kdtree_destroy> {
 public:
-    explicit KDTreeFlann(const PointCloud& cloud) {
-        o3d_kdtree_t* t = nullptr;
-        check(o3d_kdtree_create_from_pointcloud(&t, cloud.get()));
-        h_.reset(t);
-    }
-    KDTreeFlann(const double* xyz, std::size_t n) {
-        o3d_kdtree_t* t = nullptr;
-        check(o3d_kdtree_create_from_points(&t, xyz, n));
-        h_.reset(t);
-    }
+    /// @brief Take ownership of `owned` (must not be NULL).
+    explicit KDTreeFlann(o3d_kdtree_t* owned) : Owner(owned) {}
+    explicit KDTreeFlann(const PointCloud& cloud)
+        : Owner(make([&](o3d_kdtree_t** o) { return o3d_kdtree_create_from_pointcloud(o, cloud.get()); })) {}
+    KDTreeFlann(const double* xyz, std::size_t n)
+        : Owner(make([&](o3d_kdtree_t** o) { return o3d_kdtree_create_from_points(o, xyz, n); })) {}
     explicit KDTreeFlann(const std::vector<Vec3>& points)
         : KDTreeFlann(points.empty() ? nullptr : points.front().data(), points.size()) {}
     /// @brief Over the descriptors of `feature` (copied). @see o3d.geometry.KDTreeFlann(feature)
-    explicit KDTreeFlann(const Feature& feature) {
-        o3d_kdtree_t* t = nullptr;
-        check(o3d_kdtree_create_from_feature(&t, feature.get()));
-        h_.reset(t);
-    }
+    explicit KDTreeFlann(const Feature& feature)
+        : Owner(make([&](o3d_kdtree_t** o) { return o3d_kdtree_create_from_feature(o, feature.get()); })) {}
     /// @brief Over `n` points of `dimension` doubles each, one after the other (copied).
     static KDTreeFlann from_points_xd(const double* data, std::size_t dimension, std::size_t n) {
-        o3d_kdtree_t* t = nullptr;
-        check(o3d_kdtree_create_from_points_xd(&t, data, dimension, n));
-        return KDTreeFlann(Owned{}, t);
+        return create(&o3d_kdtree_create_from_points_xd, data, dimension, n);
     }
     /// @brief As above from `data.size() / dimension` points (the size must be a multiple of it).
     static KDTreeFlann from_points_xd(const std::vector<double>& data, std::size_t dimension) {
         return from_points_xd(data.data(), dimension, rows_of(data.size(), dimension));
     }
 
-    o3d_kdtree_t* get() const noexcept { return h_.get(); }
-    o3d_kdtree_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    std::size_t size() const { return query(&o3d_kdtree_size); }
+    /// @brief Dimension of the indexed points (3 for trees over clouds).
+    std::size_t dimension() const { return query(&o3d_kdtree_dimension); }
 
-    std::size_t size() const {
-        size_t n = 0;
-        check(o3d_kdtree_size(&n, get()));
-        return n;
-    }
-
-    /// @brief Batch search of `num_queries` rows of `queries`. num_threads 0 = library default.
-    SearchResult search(const double* queries, std::size_t num_queries, const SearchParam& param,
+    /// @brief Batch search of `num_queries` rows of `queries` (double or float). num_threads 0 = library default.
+    template <typename T>
+    SearchResult search(const T* queries, std::size_t num_queries, const SearchParam& param,
                         int num_threads = 0) const {
-        const o3d_search_param_t c = param.to_c();
-        o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search(&r, get(), queries, num_queries, &c, num_threads));
-        return SearchResult(r);
-    }
-    SearchResult search(const float* queries, std::size_t num_queries, const SearchParam& param,
-                        int num_threads = 0) const {
-        const o3d_search_param_t c = param.to_c();
-        o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search_f32(&r, get(), queries, num_queries, &c, num_threads));
-        return SearchResult(r);
+        return run(param, [&](o3d_search_result_t** o, const o3d_search_param_t* c) {
+            if constexpr (std::is_same_v<T, float>)
+                return o3d_kdtree_search_f32(o, get(), queries, num_queries, c, num_threads);
+            else
+                return o3d_kdtree_search(o, get(), queries, num_queries, c, num_threads);
+        });
     }
     SearchResult search(const std::vector<Vec3>& queries, const SearchParam& param, int num_threads = 0) const {
         return search(queries.empty() ? nullptr : queries.front().data(), queries.size(), param, num_threads);
@@ -165,20 +123,13 @@ public:
         return search(queries, SearchParam::Hybrid(radius, max_nn), num_threads);
     }
 
-    /// @brief Dimension of the indexed points (3 for trees over clouds).
-    std::size_t dimension() const {
-        size_t d = 0;
-        check(o3d_kdtree_dimension(&d, get()));
-        return d;
-    }
     /// @brief Batch search of `num_queries` rows of `dimension` doubles (the tree's dimension).
     /// @see KDTreeFlann.search_knn_vector_xd
     SearchResult search_xd(const double* queries, std::size_t num_queries, std::size_t dimension,
                            const SearchParam& param, int num_threads = 0) const {
-        const o3d_search_param_t c = param.to_c();
-        o3d_search_result_t* r = nullptr;
-        check(o3d_kdtree_search_xd(&r, get(), queries, num_queries, dimension, &c, num_threads));
-        return SearchResult(r);
+        return run(param, [&](o3d_search_result_t** o, const o3d_search_param_t* c) {
+            return o3d_kdtree_search_xd(o, get(), queries, num_queries, dimension, c, num_threads);
+        });
     }
     /// @brief As above with `queries.size() / dimension` rows.
     SearchResult search_xd(const std::vector<double>& queries, std::size_t dimension, const SearchParam& param,
@@ -204,8 +155,11 @@ public:
     }
 
 private:
-    struct Owned {};
-    KDTreeFlann(Owned, o3d_kdtree_t* owned) : h_(owned) {}
+    template <typename F>
+    static SearchResult run(const SearchParam& param, F&& search) {
+        const o3d_search_param_t c = param.to_c();
+        return SearchResult::adopt([&](o3d_search_result_t** o) { return search(o, &c); });
+    }
     static std::size_t rows_of(std::size_t size, std::size_t dimension) {
         if (dimension == 0 ? size != 0 : size % dimension != 0)
             throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::KDTreeFlann: " + std::to_string(size) +
@@ -213,8 +167,6 @@ private:
                                                         std::to_string(dimension));
         return dimension == 0 ? 0 : size / dimension;
     }
-
-    UniqueHandle<o3d_kdtree_t, &o3d_kdtree_destroy> h_;
 };
 
 }  // namespace o3dpp

@@ -2,6 +2,7 @@
 #pragma once
 /// @file o3dpp.hpp
 /// @brief The whole header-only C++17 wrapper over the o3d C API (namespace o3dpp).
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/camera.hpp"
 #include "o3dpp/common.hpp"
@@ -15,6 +16,7 @@
 #include "o3dpp/kdtree.hpp"
 #include "o3dpp/lineset.hpp"
 #include "o3dpp/octree.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/posegraph.hpp"
 #include "o3dpp/registration.hpp"

@@ -30,31 +30,16 @@ struct OctreeLeaf {
 };
 
 /// @brief o3d.geometry.Octree: a cube of edge size() at origin(), split to max_depth().
-class Octree {
+class Octree : public Owner<Octree, o3d_octree_t, &o3d_octree_destroy> {
 public:
     /// @brief Empty octree of depth `max_depth` >= 1.
-    explicit Octree(int max_depth) {
-        o3d_octree_t* p = nullptr;
-        check(o3d_octree_create(&p, max_depth));
-        h_.reset(p);
-    }
+    explicit Octree(int max_depth) : Owner(make([&](o3d_octree_t** o) { return o3d_octree_create(o, max_depth); })) {}
     /// @brief Take ownership of `owned` (must not be NULL).
-    explicit Octree(o3d_octree_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::Octree: NULL handle");
-    }
-    Octree(Octree&&) noexcept = default;
-    Octree& operator=(Octree&&) noexcept = default;
-    Octree(const Octree&) = delete;
-    Octree& operator=(const Octree&) = delete;
-
-    o3d_octree_t* get() const noexcept { return h_.get(); }
-    o3d_octree_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    explicit Octree(o3d_octree_t* owned) : Owner(owned) {}
 
     /// @brief Rebuild from `cloud`: the root is its bounding cube enlarged by `size_expand` (>= 0).
     Octree& convert_from_point_cloud(const PointCloud& cloud, double size_expand = 0.01) {
-        check(o3d_octree_convert_from_point_cloud(get(), cloud.get(), size_expand));
-        return *this;
+        return done(o3d_octree_convert_from_point_cloud(get(), cloud.get(), size_expand));
     }
     Vec3 origin() const {
         Vec3 v{};
@@ -71,11 +56,7 @@ public:
         check(o3d_octree_get_root(nullptr, nullptr, &v, get()));
         return v;
     }
-    std::size_t num_leaf_nodes() const {
-        size_t n = 0;
-        check(o3d_octree_num_leaf_nodes(&n, get()));
-        return n;
-    }
+    std::size_t num_leaf_nodes() const { return query(&o3d_octree_num_leaf_nodes); }
     /// @brief The leaf containing `point`; empty when it is outside the root or in an empty cell.
     std::optional<OctreeLeaf> locate_leaf_node(const Vec3& point) const {
         int32_t found = 0;
@@ -92,9 +73,6 @@ public:
                                    info.child_index};
         return leaf;
     }
-
-private:
-    UniqueHandle<o3d_octree_t, &o3d_octree_destroy> h_;
 };
 
 }  // namespace o3dpp

@@ -7,118 +7,86 @@
 /// pose_t^-1 * pose_s ~ T.
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "o3d/io.h"
 #include "o3d/posegraph.h"
+#include "o3dpp/arrays.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
 
-/// @brief PoseGraphEdge, Open3D defaults (0 -> 0, identity, odometry, confidence 1).
-struct PoseGraphEdge {
-    int32_t source_node_id = 0;
-    int32_t target_node_id = 0;
-    Mat4 transformation = identity4();
-    Mat6 information = identity6();
-    bool uncertain = false;  ///< a loop closure the line process may prune
-    double confidence = 1.0;
+/// @brief PoseGraphEdge; defaults from o3d_pose_graph_edge_init (0 -> 0, identity, odometry, confidence 1).
+struct PoseGraphEdge : COptions<PoseGraphEdge, o3d_pose_graph_edge_t, &o3d_pose_graph_edge_init> {
+    int32_t source_node_id;
+    int32_t target_node_id;
+    Mat4 transformation;
+    Mat6 information;
+    bool uncertain;  ///< a loop closure the line process may prune
+    double confidence;
 
-    PoseGraphEdge() = default;
-    PoseGraphEdge(int32_t source, int32_t target, const Mat4& t, const Mat6& info = identity6(),
-                  bool is_uncertain = false, double edge_confidence = 1.0)
-        : source_node_id(source),
-          target_node_id(target),
-          transformation(t),
-          information(info),
-          uncertain(is_uncertain),
-          confidence(edge_confidence) {}
-
-    static Mat6 identity6() {
-        Mat6 m{};
-        for (int i = 0; i < 6; ++i) m[i * 6 + i] = 1.0;
-        return m;
+    PoseGraphEdge() { load(library_defaults()); }
+    /// @brief Edge source -> target with transform `t`; the other fields as given or the library's defaults.
+    PoseGraphEdge(int32_t source, int32_t target, const Mat4& t) : PoseGraphEdge() {
+        source_node_id = source;
+        target_node_id = target;
+        transformation = t;
     }
-
-    o3d_pose_graph_edge_t to_c() const {
-        o3d_pose_graph_edge_t c = raw();
-        c.source_node_id = source_node_id;
-        c.target_node_id = target_node_id;
-        for (int i = 0; i < 16; ++i) c.transformation[i] = transformation[i];
-        for (int i = 0; i < 36; ++i) c.information[i] = information[i];
-        c.uncertain = uncertain ? 1 : 0;
-        c.confidence = confidence;
-        return c;
+    PoseGraphEdge(int32_t source, int32_t target, const Mat4& t, const Mat6& info) : PoseGraphEdge(source, target, t) {
+        information = info;
     }
-    static PoseGraphEdge from_c(const o3d_pose_graph_edge_t& c) {
-        PoseGraphEdge e;
-        e.source_node_id = c.source_node_id;
-        e.target_node_id = c.target_node_id;
-        for (int i = 0; i < 16; ++i) e.transformation[i] = c.transformation[i];
-        for (int i = 0; i < 36; ++i) e.information[i] = c.information[i];
-        e.uncertain = c.uncertain != 0;
-        e.confidence = c.confidence;
-        return e;
+    PoseGraphEdge(int32_t source, int32_t target, const Mat4& t, const Mat6& info, bool is_uncertain)
+        : PoseGraphEdge(source, target, t, info) {
+        uncertain = is_uncertain;
+    }
+    PoseGraphEdge(int32_t source, int32_t target, const Mat4& t, const Mat6& info, bool is_uncertain,
+                  double edge_confidence)
+        : PoseGraphEdge(source, target, t, info, is_uncertain) {
+        confidence = edge_confidence;
     }
     /// @brief The library's default edge (o3d_pose_graph_edge_init).
-    static PoseGraphEdge library_default() { return from_c(raw()); }
+    static PoseGraphEdge library_default() { return PoseGraphEdge(); }
+    static PoseGraphEdge from_c(const o3d_pose_graph_edge_t& c) {
+        PoseGraphEdge e;
+        e.load(c);
+        return e;
+    }
 
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.source_node_id, c.source_node_id);
+        f(s.target_node_id, c.target_node_id);
+        f(s.transformation, c.transformation);
+        f(s.information, c.information);
+        f(s.uncertain, c.uncertain);
+        f(s.confidence, c.confidence);
+    }
     bool operator==(const PoseGraphEdge& o) const {
-        return source_node_id == o.source_node_id && target_node_id == o.target_node_id &&
-               transformation == o.transformation && information == o.information && uncertain == o.uncertain &&
-               confidence == o.confidence;
+        return std::tie(source_node_id, target_node_id, transformation, information, uncertain, confidence) ==
+               std::tie(o.source_node_id, o.target_node_id, o.transformation, o.information, o.uncertain,
+                        o.confidence);
     }
     bool operator!=(const PoseGraphEdge& o) const { return !(*this == o); }
-
-private:
-    static o3d_pose_graph_edge_t raw() {
-        o3d_pose_graph_edge_t c;
-        check(o3d_pose_graph_edge_init(&c, sizeof c));
-        return c;
-    }
 };
 
 /// @brief A pose graph: one pose (rigid 4x4) per node, and edges. Move-only; clone() deep-copies.
-class PoseGraph {
+class PoseGraph : public Owner<PoseGraph, o3d_pose_graph_t, &o3d_pose_graph_destroy> {
 public:
     /// @brief An empty graph.
-    PoseGraph() {
-        o3d_pose_graph_t* g = nullptr;
-        check(o3d_pose_graph_create(&g));
-        h_.reset(g);
-    }
+    PoseGraph() : Owner(make(&o3d_pose_graph_create)) {}
     /// @brief Take ownership of `owned` (must not be NULL).
-    explicit PoseGraph(o3d_pose_graph_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::PoseGraph: NULL handle");
-    }
-    PoseGraph(PoseGraph&&) noexcept = default;
-    PoseGraph& operator=(PoseGraph&&) noexcept = default;
-    PoseGraph(const PoseGraph&) = delete;
-    PoseGraph& operator=(const PoseGraph&) = delete;
-
-    o3d_pose_graph_t* get() const noexcept { return h_.get(); }
-    o3d_pose_graph_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    explicit PoseGraph(o3d_pose_graph_t* owned) : Owner(owned) {}
 
     /// @brief Deep copy.
-    PoseGraph clone() const {
-        o3d_pose_graph_t* g = nullptr;
-        check(o3d_pose_graph_clone(&g, get()));
-        return PoseGraph(g);
-    }
+    PoseGraph clone() const { return derive(&o3d_pose_graph_clone); }
 
-    std::size_t num_nodes() const {
-        size_t n = 0;
-        check(o3d_pose_graph_num_nodes(&n, get()));
-        return n;
-    }
-    std::size_t num_edges() const {
-        size_t n = 0;
-        check(o3d_pose_graph_num_edges(&n, get()));
-        return n;
-    }
+    std::size_t num_nodes() const { return query(&o3d_pose_graph_num_nodes); }
+    std::size_t num_edges() const { return query(&o3d_pose_graph_num_edges); }
 
     /// @brief Append a node (a finite rigid transform).
     void add_node(const Mat4& pose = identity4()) { check(o3d_pose_graph_add_node(get(), pose.data())); }
@@ -128,13 +96,7 @@ public:
         return pose;
     }
     void set_node(std::size_t index, const Mat4& pose) { check(o3d_pose_graph_set_node(get(), index, pose.data())); }
-    std::vector<Mat4> nodes() const {
-        std::vector<Mat4> out;
-        const std::size_t n = num_nodes();
-        out.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) out.push_back(node(i));
-        return out;
-    }
+    std::vector<Mat4> nodes() const { return detail::collect(num_nodes(), [&](std::size_t i) { return node(i); }); }
 
     /// @brief Append an edge (node ids are checked by global_optimization).
     void add_edge(const PoseGraphEdge& edge) {
@@ -142,7 +104,7 @@ public:
         check(o3d_pose_graph_add_edge(get(), &c));
     }
     PoseGraphEdge edge(std::size_t index) const {
-        o3d_pose_graph_edge_t c = PoseGraphEdge().to_c();
+        o3d_pose_graph_edge_t c = PoseGraphEdge::library_defaults();
         check(o3d_pose_graph_get_edge(&c, get(), index));
         return PoseGraphEdge::from_c(c);
     }
@@ -151,25 +113,16 @@ public:
         check(o3d_pose_graph_set_edge(get(), index, &c));
     }
     std::vector<PoseGraphEdge> edges() const {
-        std::vector<PoseGraphEdge> out;
-        const std::size_t n = num_edges();
-        out.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) out.push_back(edge(i));
-        return out;
+        return detail::collect(num_edges(), [&](std::size_t i) { return edge(i); });
     }
 
     /// @brief Remove every node and edge.
     void clear() { check(o3d_pose_graph_clear(get())); }
-
-private:
-    UniqueHandle<o3d_pose_graph_t, &o3d_pose_graph_destroy> h_;
 };
 
 /// @brief Read Open3D's JSON pose graph. @see o3d.io.read_pose_graph
 inline PoseGraph read_pose_graph(const std::string& path) {
-    o3d_pose_graph_t* g = nullptr;
-    check(o3d_io_read_pose_graph(&g, path.c_str()));
-    return PoseGraph(g);
+    return PoseGraph::create(&o3d_io_read_pose_graph, path.c_str());
 }
 /// @brief Write `graph` in Open3D's JSON layout. @see o3d.io.write_pose_graph
 inline void write_pose_graph(const std::string& path, const PoseGraph& graph) {
@@ -182,44 +135,44 @@ enum class GlobalOptimizationMethod : int32_t {
 };
 
 /// @brief GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption, method, threads,
-/// progress; Open3D defaults.
-struct GlobalOptimizationOptions {
-    GlobalOptimizationMethod method = GlobalOptimizationMethod::LevenbergMarquardt;
-    int max_iteration = 100;
-    double min_relative_increment = 1e-6;
-    double min_relative_residual_increment = 1e-6;
-    double min_right_term = 1e-6;
-    double min_residual = 1e-6;
-    int max_iteration_lm = 20;
-    double upper_scale_factor = 2.0 / 3.0;
-    double lower_scale_factor = 1.0 / 3.0;
-    double max_correspondence_distance = 0.075;
-    double edge_prune_threshold = 0.25;
-    double preference_loop_closure = 1.0;
-    int reference_node = -1;  ///< -1: the first node
-    int num_threads = 0;
+/// progress; defaults from o3d_global_optimization_options_init.
+struct GlobalOptimizationOptions
+    : COptions<GlobalOptimizationOptions, o3d_global_optimization_options_t, &o3d_global_optimization_options_init> {
+    GlobalOptimizationMethod method;
+    int max_iteration;
+    double min_relative_increment;
+    double min_relative_residual_increment;
+    double min_right_term;
+    double min_residual;
+    int max_iteration_lm;
+    double upper_scale_factor;
+    double lower_scale_factor;
+    double max_correspondence_distance;
+    double edge_prune_threshold;
+    double preference_loop_closure;
+    int reference_node;  ///< -1: the first node
+    int num_threads;
     /// @brief Fraction of max_iteration done over both passes; return false to cancel (the graph
     /// is then left unchanged). An exception it throws cancels the call and is rethrown.
     ProgressCallback progress;
 
-    o3d_global_optimization_options_t to_c() const {
-        o3d_global_optimization_options_t c;
-        check(o3d_global_optimization_options_init(&c, sizeof c));
-        c.method = static_cast<int32_t>(method);
-        c.max_iteration = max_iteration;
-        c.min_relative_increment = min_relative_increment;
-        c.min_relative_residual_increment = min_relative_residual_increment;
-        c.min_right_term = min_right_term;
-        c.min_residual = min_residual;
-        c.max_iteration_lm = max_iteration_lm;
-        c.upper_scale_factor = upper_scale_factor;
-        c.lower_scale_factor = lower_scale_factor;
-        c.max_correspondence_distance = max_correspondence_distance;
-        c.edge_prune_threshold = edge_prune_threshold;
-        c.preference_loop_closure = preference_loop_closure;
-        c.reference_node = reference_node;
-        c.num_threads = num_threads;
-        return c;
+    GlobalOptimizationOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.method, c.method);
+        f(s.max_iteration, c.max_iteration);
+        f(s.min_relative_increment, c.min_relative_increment);
+        f(s.min_relative_residual_increment, c.min_relative_residual_increment);
+        f(s.min_right_term, c.min_right_term);
+        f(s.min_residual, c.min_residual);
+        f(s.max_iteration_lm, c.max_iteration_lm);
+        f(s.upper_scale_factor, c.upper_scale_factor);
+        f(s.lower_scale_factor, c.lower_scale_factor);
+        f(s.max_correspondence_distance, c.max_correspondence_distance);
+        f(s.edge_prune_threshold, c.edge_prune_threshold);
+        f(s.preference_loop_closure, c.preference_loop_closure);
+        f(s.reference_node, c.reference_node);
+        f(s.num_threads, c.num_threads);
     }
 };
 
@@ -235,16 +188,11 @@ struct GlobalOptimizationSummary {
 /// prune uncertain edges below edge_prune_threshold, optimize again. An edge naming a missing node is
 /// an Error and leaves `graph` unchanged.
 inline GlobalOptimizationSummary global_optimization(PoseGraph& graph, const GlobalOptimizationOptions& options = {}) {
-    o3d_global_optimization_options_t c = options.to_c();
-    detail::ProgressContext ctx;
-    if (options.progress) {
-        ctx.callback = &options.progress;
-        c.progress = &detail::progress_trampoline;
-        c.user_data = &ctx;
-    }
     o3d_global_optimization_summary_t s{};
     s.struct_size = sizeof s;
-    detail::check_progress(o3d_global_optimization(&s, graph.get(), &c), ctx);
+    check(detail::with_progress(options.to_c(), options.progress, [&](const o3d_global_optimization_options_t* c) {
+        return o3d_global_optimization(&s, graph.get(), c);
+    }));
     return {s.iterations, s.initial_residual, s.final_residual, s.pruned_edges};
 }
 

@@ -12,6 +12,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 
@@ -37,7 +38,7 @@ struct RobustKernel {
         Tukey = O3D_KERNEL_TUKEY     ///< w = (1 - (r / k)^2)^2 if |r| <= k else 0
     };
     Type type = Type::L2;
-    double k = 1.0;
+    double k = 1.0;  ///< unused by L2 and L1
 
     static RobustKernel L2() { return {Type::L2, 1.0}; }
     static RobustKernel L1() { return {Type::L1, 1.0}; }
@@ -54,96 +55,76 @@ struct RobustKernel {
     }
 };
 
-/// @brief ICP options (estimation method + ICPConvergenceCriteria), Open3D defaults.
-struct IcpOptions {
-    Estimation estimation = Estimation::PointToPoint;
-    bool with_scaling = false;
-    double relative_fitness = 1e-6;
-    double relative_rmse = 1e-6;
-    int max_iteration = 30;
-    int num_threads = 0;
+/// @brief ICP options (estimation method + ICPConvergenceCriteria); defaults from o3d_icp_options_init.
+struct IcpOptions : COptions<IcpOptions, o3d_icp_options_t, &o3d_icp_options_init> {
+    Estimation estimation;
+    bool with_scaling;
+    double relative_fitness;
+    double relative_rmse;
+    int max_iteration;
+    int num_threads;
     /// @brief Robust kernel of point-to-plane, colored, generalized and symmetric ICP.
-    RobustKernel kernel = RobustKernel::L2();
+    RobustKernel kernel;
     /// @brief Colored ICP: weight of the geometric term, in [0, 1].
-    double lambda_geometric = 0.968;
+    double lambda_geometric;
     /// @brief Generalized ICP: covariance regularisation (> 0).
-    double epsilon = 1e-3;
+    double epsilon;
     /// @brief Called after each iteration; return false to cancel (Error with O3D_ERROR_CANCELLED).
     /// An exception it throws cancels the call and is rethrown to the caller.
     ProgressCallback progress;
 
-    /// @brief The C struct (without the callback, which registration_icp wires up).
-    o3d_icp_options_t to_c() const {
-        o3d_icp_options_t c;
-        check(o3d_icp_options_init(&c, sizeof c));
-        c.estimation = static_cast<int32_t>(estimation);
-        c.with_scaling = with_scaling ? 1 : 0;
-        c.relative_fitness = relative_fitness;
-        c.relative_rmse = relative_rmse;
-        c.max_iteration = max_iteration;
-        c.num_threads = num_threads;
-        c.kernel = static_cast<int32_t>(kernel.type);
-        c.kernel_k = kernel.k;
-        c.lambda_geometric = lambda_geometric;
-        c.epsilon = epsilon;
-        return c;
+    IcpOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.estimation, c.estimation);
+        f(s.with_scaling, c.with_scaling);
+        f(s.relative_fitness, c.relative_fitness);
+        f(s.relative_rmse, c.relative_rmse);
+        f(s.max_iteration, c.max_iteration);
+        f(s.num_threads, c.num_threads);
+        f(s.kernel.type, c.kernel);
+        f(s.kernel.k, c.kernel_k);
+        f(s.lambda_geometric, c.lambda_geometric);
+        f(s.epsilon, c.epsilon);
     }
 };
 
 /// @brief Transformation, fitness, inlier RMSE and correspondences. Move-only.
-class RegistrationResult {
+class RegistrationResult
+    : public Owner<RegistrationResult, o3d_registration_result_t, &o3d_registration_result_destroy> {
 public:
-    explicit RegistrationResult(o3d_registration_result_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::RegistrationResult: NULL handle");
-    }
-    o3d_registration_result_t* get() const noexcept { return h_.get(); }
-    o3d_registration_result_t* release() noexcept { return h_.release(); }
-    explicit operator bool() const noexcept { return static_cast<bool>(h_); }
+    explicit RegistrationResult(o3d_registration_result_t* owned) : Owner(owned) {}
 
     Mat4 transformation() const {
         Mat4 t{};
         check(o3d_registration_result_get_transformation(t.data(), get()));
         return t;
     }
-    double fitness() const {
-        double v = 0;
-        check(o3d_registration_result_get_fitness(&v, get()));
-        return v;
-    }
-    double inlier_rmse() const {
-        double v = 0;
-        check(o3d_registration_result_get_inlier_rmse(&v, get()));
-        return v;
-    }
+    double fitness() const { return query(&o3d_registration_result_get_fitness); }
+    double inlier_rmse() const { return query(&o3d_registration_result_get_inlier_rmse); }
     /// @brief (source index, target index) pairs.
     std::vector<std::array<int32_t, 2>> correspondence_set() const {
-        size_t n = 0;
-        check(o3d_registration_result_get_correspondence_set(nullptr, 0, &n, get()));
-        std::vector<std::array<int32_t, 2>> out(n);
-        check(o3d_registration_result_get_correspondence_set(n ? out.front().data() : nullptr, n, &n, get()));
-        out.resize(n);
-        return out;
+        return copy_out<std::array<int32_t, 2>>(&o3d_registration_result_get_correspondence_set);
     }
-
-private:
-    UniqueHandle<o3d_registration_result_t, &o3d_registration_result_destroy> h_;
 };
+
+namespace detail {
+/// @brief Run `call(out, c_options)` with `options`' progress wired in, and own the result.
+template <typename Options, typename Call>
+RegistrationResult register_with(const Options& options, Call&& call) {
+    return RegistrationResult::adopt([&](o3d_registration_result_t** out) {
+        return with_progress(options.to_c(), options.progress, [&](const auto* c) { return call(out, c); });
+    });
+}
+}  // namespace detail
 
 /// @brief ICP of `source` onto `target` from `init`. @see o3d.pipelines.registration.registration_icp
 inline RegistrationResult registration_icp(const PointCloud& source, const PointCloud& target,
                                            double max_correspondence_distance, const Mat4& init = identity4(),
                                            const IcpOptions& options = {}) {
-    o3d_icp_options_t c = options.to_c();
-    detail::ProgressContext ctx;
-    if (options.progress) {
-        ctx.callback = &options.progress;
-        c.progress = &detail::progress_trampoline;
-        c.user_data = &ctx;
-    }
-    o3d_registration_result_t* r = nullptr;
-    detail::check_progress(
-        o3d_register_icp(&r, source.get(), target.get(), max_correspondence_distance, init.data(), &c), ctx);
-    return RegistrationResult(r);
+    return detail::register_with(options, [&](o3d_registration_result_t** out, const o3d_icp_options_t* c) {
+        return o3d_register_icp(out, source.get(), target.get(), max_correspondence_distance, init.data(), c);
+    });
 }
 
 namespace detail {
@@ -180,10 +161,10 @@ inline RegistrationResult registration_symmetric_icp(const PointCloud& source, c
 inline RegistrationResult evaluate_registration(const PointCloud& source, const PointCloud& target,
                                                 double max_correspondence_distance,
                                                 const Mat4& transformation = identity4()) {
-    o3d_registration_result_t* r = nullptr;
-    check(o3d_evaluate_registration(&r, source.get(), target.get(), max_correspondence_distance,
-                                    transformation.data()));
-    return RegistrationResult(r);
+    return RegistrationResult::adopt([&](o3d_registration_result_t** out) {
+        return o3d_evaluate_registration(out, source.get(), target.get(), max_correspondence_distance,
+                                         transformation.data());
+    });
 }
 
 /// @brief 6x6 information matrix (row-major).

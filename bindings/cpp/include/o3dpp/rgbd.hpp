@@ -9,23 +9,23 @@
 #include "o3dpp/error.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
+#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 
 namespace o3dpp {
 
-/// @brief RGBDImage.create_from_color_and_depth keyword arguments (Open3D's defaults).
-struct RgbdOptions {
-    double depth_scale = 1000.0;
-    double depth_trunc = 3.0;
-    bool convert_rgb_to_intensity = true;
+/// @brief RGBDImage.create_from_color_and_depth keyword arguments; defaults from o3d_rgbd_options_init.
+struct RgbdOptions : COptions<RgbdOptions, o3d_rgbd_options_t, &o3d_rgbd_options_init> {
+    double depth_scale;
+    double depth_trunc;
+    bool convert_rgb_to_intensity;
 
-    o3d_rgbd_options_t to_c() const {
-        o3d_rgbd_options_t c;
-        check(o3d_rgbd_options_init(&c, sizeof c));
-        c.depth_scale = depth_scale;
-        c.depth_trunc = depth_trunc;
-        c.convert_rgb_to_intensity = convert_rgb_to_intensity ? 1 : 0;
-        return c;
+    RgbdOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.depth_scale, c.depth_scale);
+        f(s.depth_trunc, c.depth_trunc);
+        f(s.convert_rgb_to_intensity, c.convert_rgb_to_intensity);
     }
 };
 
@@ -38,66 +38,44 @@ enum class RgbdFormat : int32_t {
 };
 
 /// @brief A color (or intensity) image and a float depth image in metres. Move-only.
-class RgbdImage {
+class RgbdImage : public Owner<RgbdImage, o3d_rgbd_image_t, &o3d_rgbd_image_destroy> {
 public:
-    explicit RgbdImage(o3d_rgbd_image_t* owned) : h_(owned) {
-        if (!owned) throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp::RgbdImage: NULL handle");
-    }
-    RgbdImage(RgbdImage&&) noexcept = default;
-    RgbdImage& operator=(RgbdImage&&) noexcept = default;
-    RgbdImage(const RgbdImage&) = delete;
-    RgbdImage& operator=(const RgbdImage&) = delete;
+    explicit RgbdImage(o3d_rgbd_image_t* owned) : Owner(owned) {}
 
     /// @brief Pair a color image with a same-size depth image (depth converted to metres).
     static RgbdImage create_from_color_and_depth(const Image& color, const Image& depth,
                                                  const RgbdOptions& options = {}) {
         const o3d_rgbd_options_t c = options.to_c();
-        return adopt([&](o3d_rgbd_image_t** o) {
-            return o3d_rgbd_image_create_from_color_and_depth(o, color.get(), depth.get(), &c);
-        });
+        return create(&o3d_rgbd_image_create_from_color_and_depth, color.get(), depth.get(), &c);
     }
     /// @brief create_from_{redwood,tum,sun,nyu}_format.
     static RgbdImage create_from_dataset_format(RgbdFormat format, const Image& color, const Image& depth,
                                                 bool convert_rgb_to_intensity = true) {
-        return adopt([&](o3d_rgbd_image_t** o) {
-            return o3d_rgbd_image_create_from_dataset_format(o, static_cast<int32_t>(format), color.get(),
-                                                             depth.get(), convert_rgb_to_intensity ? 1 : 0);
-        });
+        return create(&o3d_rgbd_image_create_from_dataset_format, static_cast<int32_t>(format), color.get(),
+                      depth.get(), convert_rgb_to_intensity ? 1 : 0);
     }
-
-    o3d_rgbd_image_t* get() const noexcept { return h_.get(); }
 
     /// @brief Copy of the color (or intensity) image.
-    Image color() const { return Image::adopt([&](o3d_image_t** o) { return o3d_rgbd_image_get_color(o, get()); }); }
+    Image color() const { return derive<Image>(&o3d_rgbd_image_get_color); }
     /// @brief Copy of the depth image (float metres).
-    Image depth() const { return Image::adopt([&](o3d_image_t** o) { return o3d_rgbd_image_get_depth(o, get()); }); }
-
-private:
-    template <typename F>
-    static RgbdImage adopt(F&& create) {
-        o3d_rgbd_image_t* p = nullptr;
-        check(create(&p));
-        return RgbdImage(p);
-    }
-
-    UniqueHandle<o3d_rgbd_image_t, &o3d_rgbd_image_destroy> h_;
+    Image depth() const { return derive<Image>(&o3d_rgbd_image_get_depth); }
 };
 
-/// @brief PointCloud.create_from_depth_image keyword arguments (Open3D's defaults).
-struct DepthToCloudOptions {
-    double depth_scale = 1000.0;
-    double depth_trunc = 1000.0;
-    int stride = 1;
-    bool project_valid_depth_only = true;
+/// @brief PointCloud.create_from_depth_image keyword arguments; defaults from o3d_depth_to_cloud_options_init.
+struct DepthToCloudOptions
+    : COptions<DepthToCloudOptions, o3d_depth_to_cloud_options_t, &o3d_depth_to_cloud_options_init> {
+    double depth_scale;
+    double depth_trunc;
+    int stride;
+    bool project_valid_depth_only;
 
-    o3d_depth_to_cloud_options_t to_c() const {
-        o3d_depth_to_cloud_options_t c;
-        check(o3d_depth_to_cloud_options_init(&c, sizeof c));
-        c.depth_scale = depth_scale;
-        c.depth_trunc = depth_trunc;
-        c.stride = stride;
-        c.project_valid_depth_only = project_valid_depth_only ? 1 : 0;
-        return c;
+    DepthToCloudOptions() { load(library_defaults()); }
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.depth_scale, c.depth_scale);
+        f(s.depth_trunc, c.depth_trunc);
+        f(s.stride, c.stride);
+        f(s.project_valid_depth_only, c.project_valid_depth_only);
     }
 };
 
@@ -107,19 +85,15 @@ inline PointCloud create_point_cloud_from_depth_image(const Image& depth, const 
                                                       const Mat4& extrinsic = identity4(),
                                                       const DepthToCloudOptions& options = {}) {
     const o3d_depth_to_cloud_options_t c = options.to_c();
-    return PointCloud::adopt([&](o3d_pointcloud_t** o) {
-        return o3d_pointcloud_create_from_depth_image(o, depth.get(), &intrinsic, extrinsic.data(), &c);
-    });
+    return PointCloud::create(&o3d_pointcloud_create_from_depth_image, depth.get(), &intrinsic, extrinsic.data(), &c);
 }
 
 /// @brief As create_point_cloud_from_depth_image for an RGB-D image, with per-point colors.
 inline PointCloud create_point_cloud_from_rgbd_image(const RgbdImage& rgbd, const PinholeIntrinsic& intrinsic,
                                                      const Mat4& extrinsic = identity4(),
                                                      bool project_valid_depth_only = true) {
-    return PointCloud::adopt([&](o3d_pointcloud_t** o) {
-        return o3d_pointcloud_create_from_rgbd_image(o, rgbd.get(), &intrinsic, extrinsic.data(),
-                                                     project_valid_depth_only ? 1 : 0);
-    });
+    return PointCloud::create(&o3d_pointcloud_create_from_rgbd_image, rgbd.get(), &intrinsic, extrinsic.data(),
+                              project_valid_depth_only ? 1 : 0);
 }
 
 }  // namespace o3dpp

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// @file span.hpp
-/// @brief Span<T> (pointer + size, C++17 stand-in for std::span) and Rows3<T> (N x 3 row-major view).
+/// @brief Span<T> (pointer + size, C++17 stand-in for std::span) and Rows<T> (N x cols row-major view).
 #include <array>
 #include <cstddef>
 #include <stdexcept>
@@ -38,24 +38,30 @@ private:
     std::size_t size_ = 0;
 };
 
-/// @brief Non-owning view of `rows` rows of 3 values (points, normals or colors).
-/// `view[i]` is a pointer to row i (x, y, z). Borrowed: valid until the owner is mutated or destroyed.
+/// @brief Non-owning view of `rows` rows of `cols` values (points, normals, triangles, descriptors...).
+/// `view[i]` is a pointer to row i. Borrowed: valid until the owner is mutated or destroyed.
 template <typename T>
-class Rows3 {
+class Rows {
 public:
-    constexpr Rows3() noexcept = default;
-    constexpr Rows3(T* data, std::size_t rows) noexcept : data_(data), rows_(rows) {}
+    constexpr Rows() noexcept = default;
+    constexpr Rows(T* data, std::size_t rows, std::size_t cols = 3) noexcept : data_(data), rows_(rows), cols_(cols) {}
     constexpr T* data() const noexcept { return data_; }
     /// @brief Number of rows.
     constexpr std::size_t size() const noexcept { return rows_; }
+    /// @brief Values per row.
+    constexpr std::size_t cols() const noexcept { return cols_; }
     constexpr bool empty() const noexcept { return rows_ == 0; }
-    constexpr T* operator[](std::size_t i) const noexcept { return data_ + 3 * i; }
-    /// @brief All 3 * size() values.
-    constexpr Span<T> flat() const noexcept { return Span<T>(data_, 3 * rows_); }
+    constexpr T* operator[](std::size_t i) const noexcept { return data_ + cols_ * i; }
+    /// @brief All size() * cols() values.
+    constexpr Span<T> flat() const noexcept { return Span<T>(data_, cols_ * rows_); }
 
 private:
     T* data_ = nullptr;
     std::size_t rows_ = 0;
+    std::size_t cols_ = 3;
 };
+/// @brief The N x 3 views of earlier versions: the same type.
+template <typename T>
+using Rows3 = Rows<T>;
 
 }  // namespace o3dpp

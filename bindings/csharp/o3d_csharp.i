@@ -7,6 +7,11 @@
  */
 %csconst(1);
 %typemap(csinterfaces) SWIGTYPE "global::System.IDisposable"
+%typemap(csclassmodifiers) SWIGTYPE "public partial class" /* conveniences: bindings/csharp/src/*.cs */
+%typemap(cscode) SWIGTYPE %{
+  /// <summary>True once Dispose ran (later calls throw ObjectDisposedException).</summary>
+  public bool IsDisposed { get { return swigCPtr.Handle == global::System.IntPtr.Zero; } }
+%}
 
 %{
 typedef struct { const void *p; int64_t n; } o3dx_span;
@@ -65,6 +70,16 @@ O3DX_CS_OUT(i32, int)
 O3DX_CS_OUT(i64, long)
 O3DX_CS_OUT(u8, byte)
 
+/* ---- views: borrowed native memory (O3d.View: Data, Rows, Bytes) ------------------------------ */
+%typemap(ctype, out="o3dx_view") o3dx_view, o3dx_mview "o3dx_view"
+%typemap(imtype) o3dx_view, o3dx_mview "View"
+%typemap(cstype) o3dx_view, o3dx_mview "View"
+%typemap(out, null="o3dx_view_null") o3dx_view, o3dx_mview %{ $result = $1; %}
+%typemap(csout, excode=SWIGEXCODE) o3dx_view, o3dx_mview {
+    var v = $imcall;$excode
+    return v;
+  }
+
 /* raw pointers (callback trampolines, user_data) */
 %typemap(ctype) void * "void *"
 %typemap(imtype) void * "global::System.IntPtr"
@@ -101,15 +116,23 @@ SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback 
 %extend T { void set_progress_native(void *fn, void *user_data) { $self->progress = (o3d_progress_callback)fn; $self->user_data = user_data; } }
 %csmethodmodifiers T::set_progress_native "internal";
 %typemap(cscode) T %{
+  // The delegate lives in this field; native code gets a WEAK handle to it, so a callback that captures
+  // this options object makes no GC root cycle: an options object never disposed is still finalized.
+  global::System.Func<double, bool> progressFn;
   global::System.Runtime.InteropServices.GCHandle progressHandle;
   /// <summary>Called with the fraction done; return false to cancel (the call throws O3dException CANCELLED).</summary>
   public void SetProgress(global::System.Func<double, bool> progress) {
     global::System.Runtime.InteropServices.GCHandle old = progressHandle;
-    progressHandle = progress == null ? default(global::System.Runtime.InteropServices.GCHandle) : global::System.Runtime.InteropServices.GCHandle.Alloc(progress);
+    progressFn = progress;
+    progressHandle = progress == null ? default(global::System.Runtime.InteropServices.GCHandle)
+                                      : global::System.Runtime.InteropServices.GCHandle.Alloc(progress, global::System.Runtime.InteropServices.GCHandleType.Weak);
     SetProgressNative(progress == null ? global::System.IntPtr.Zero : O3dx.ProgressTrampoline,
                       progress == null ? global::System.IntPtr.Zero : global::System.Runtime.InteropServices.GCHandle.ToIntPtr(progressHandle));
     if (old.IsAllocated) old.Free();
   }
+  public bool IsDisposed { get { return swigCPtr.Handle == global::System.IntPtr.Zero; } }
+  /// <summary>The progress callback (see SetProgress).</summary>
+  public global::System.Func<double, bool> Progress { get { return progressFn; } set { SetProgress(value); } }
 %}
 %typemap(csdisposing, methodname="Dispose", methodmodifiers="protected", parameters="bool disposing") T {
     lock(this) {

@@ -65,6 +65,15 @@ O3DX_JAVA_ARRAY(i32, int32_t, jint, int, jintArray, Int)
 O3DX_JAVA_ARRAY(i64, int64_t, jlong, long, jlongArray, Long)
 O3DX_JAVA_ARRAY(u8, uint8_t, jbyte, byte, jbyteArray, Byte)
 
+/* views (*View methods): a direct ByteBuffer over the borrowed memory, native order, read-only unless
+   the method is a *MutableView; valid until its owner changes or is closed */
+%typemap(jni) o3dx_view, o3dx_mview "jobject"
+%typemap(jtype) o3dx_view, o3dx_mview "java.nio.ByteBuffer"
+%typemap(jstype) o3dx_view, o3dx_mview "java.nio.ByteBuffer"
+%typemap(out) o3dx_view, o3dx_mview %{ $result = (*jenv)->NewDirectByteBuffer(jenv, $1.p ? $1.p : (void *)&o3dx_view_null, (jlong)$1.bytes); %}
+%typemap(javaout) o3dx_mview { return $jnicall.order(java.nio.ByteOrder.nativeOrder()); }
+%typemap(javaout) o3dx_view { return $jnicall.asReadOnlyBuffer().order(java.nio.ByteOrder.nativeOrder()); }
+
 /* correspondence checkers: CorrespondenceChecker[] -> one contiguous C array */
 %typemap(jni) o3dx_in_o3d_correspondence_checker_t "jlongArray"
 %typemap(jtype) o3dx_in_o3d_correspondence_checker_t "long[]"

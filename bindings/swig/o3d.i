@@ -6,6 +6,7 @@
  * This file holds what the generated part relies on, the same for both languages:
  *   o3dx_in_<e>   an array argument (pointer + length; the managed array is pinned, never copied)
  *   o3dx_out_<e>  an array result (copied once into a managed array; `owned` buffers are freed)
+ *   o3dx_view     a borrowed view (*_view functions): C# struct View, Java direct ByteBuffer
  *   O3DX_CHECK    a failed o3d_status jumps to `fail:`; %exception raises it as O3dException
  *                 (status + o3d_last_error_message()) after the call has released everything
  * Language typemaps: bindings/csharp/o3d_csharp.i, bindings/java/o3d_java.i.
@@ -30,6 +31,10 @@ O3DX_ARRAY_TYPES(i32, int32_t)
 O3DX_ARRAY_TYPES(i64, int64_t)
 O3DX_ARRAY_TYPES(u8, uint8_t)
 typedef struct { const o3d_correspondence_checker_t *p; size_t n; } o3dx_in_o3d_correspondence_checker_t;
+/* a borrowed view (read-only / writable): address, rows, bytes; valid until its owner changes */
+typedef struct { void *p; size_t rows; size_t bytes; } o3dx_view;
+typedef o3dx_view o3dx_mview;
+static const o3dx_view o3dx_view_null;
 
 #if defined(_MSC_VER)
 #define O3DX_TLS __declspec(thread)

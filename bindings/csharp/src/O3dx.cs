@@ -13,6 +13,11 @@ namespace O3d
         public O3dException(int status, string message) : base(message) { Status = status; }
     }
 
+    /// <summary>A borrowed view of native memory (the *View methods): valid until its owner changes or is
+    /// disposed. Rows as the C API counts them; Bytes = rows x values per row x value size.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct View { public IntPtr Data; public long Rows; public long Bytes; }
+
     /// <summary>Marks a static method as callable from native code (Mono AOT / IL2CPP).</summary>
     [AttributeUsage(AttributeTargets.Method)]
     public sealed class MonoPInvokeCallbackAttribute : Attribute
@@ -54,7 +59,7 @@ namespace O3d
         [MonoPInvokeCallback(typeof(ProgressFn))]
         static int Progress(double fraction, IntPtr userData)
         {
-            try { return ((Func<double, bool>)GCHandle.FromIntPtr(userData).Target)(fraction) ? 0 : 1; }
+            try { var f = (Func<double, bool>)GCHandle.FromIntPtr(userData).Target; return f == null || f(fraction) ? 0 : 1; }
             catch (Exception) { return 1; } // an exception cancels: it must not cross native frames
         }
 

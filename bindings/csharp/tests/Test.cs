@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Assert-based tests of the generated O3d C# binding. Prints "N passed, M failed" last; exit code 1 on failure.
-//   mcs -target:exe -out:Test.exe -r:O3d.dll Test.cs && mono Test.exe
+//   mcs -target:exe -out:Test.exe -r:O3d.dll *.cs && mono Test.exe
+// Data: $O3D_TEST_DATA (else $O3D_TEST_DATA_DEFAULT, else ../shared/data); tests needing it are skipped
+// when it is missing, unless O3D_REQUIRE_TEST_DATA=1 (then they fail).
 using System;
 using System.Collections.Generic;
 using System.Linq;
 using O3d;
 
-static class Test
+static partial class Test
 {
-    static int passed, failed;
+    static int passed, failed, skipped;
+    class SkipException : Exception { public SkipException(string m) : base(m) { } }
 
     static void Check(bool cond, string what) { if (!cond) throw new Exception("check failed: " + what); }
     static void Near(double a, double b, double tol, string what)
@@ -36,6 +39,7 @@ static class Test
     static void Run(string name, Action body)
     {
         try { body(); passed++; Console.WriteLine("PASS " + name); }
+        catch (SkipException e) { skipped++; Console.WriteLine("SKIP " + name + ": " + e.Message); }
         catch (Exception e) { failed++; Console.WriteLine("FAIL " + name + ": " + e.GetType().Name + ": " + e.Message); }
     }
     static double[] RandomPoints(int n, int seed, double sx = 1, double sy = 1, double sz = 1)
@@ -289,6 +293,8 @@ static class Test
             Console.WriteLine("  (log handler received " + lines.Count + " line(s))");
         });
 
+        PortedTests(); // Ported.cs
+        if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;
     }

@@ -13,7 +13,8 @@ Rules (per C function `o3d_<noun>_<verb>`, noun = an opaque handle or a value st
     return value (`_is_`/`has_` int32 -> bool), `double out[N]` -> returned array, copy-out triples
     (out, capacity, out_n) -> returned array sized by array_shape, a count query, or an upper bound
     (CAPACITY below; a function with side effects or real cost is never called twice); several
-    outputs -> a generated result class with one getter per output;
+    outputs -> a generated result class with one getter per output (a view function's: `<Noun><Verb>`,
+    e.g. SearchResultView); value-struct outputs are filled by their `*_init` first (struct_size set);
   * the first input of the noun's type -> a method of the noun's class, otherwise a static method;
     functions of no noun -> static methods of the module class `Library`;
   * `<x>_f32` becomes a float[] overload of `<x>`; `o3d_<noun>_create(T** out)` the constructor;
@@ -87,7 +88,8 @@ class Gen:
         self.structs = {s["name"]: s for s in model["structs"]}
         self.nouns = sorted((n[4:-2] for n in self.handles | set(self.structs)), key=len, reverse=True)
         self.fnames = {f["name"] for f in model["functions"]}
-        self.out = []
+        self.inits = {f["name"]: f for f in model["functions"] if f["name"].endswith("_init")}
+        self.out, self.view_results = [], set()
 
     def cls(self, ctype):
         return CLASS_NAMES.get(ctype, camel(ctype[4:-2]))
@@ -206,8 +208,14 @@ class Gen:
             if kind == "handle":
                 lines.append(f"{base} *{field} = NULL;")
                 args[ps.index(p)] = f"&{field}"
-            elif kind == "struct":
+            elif kind == "struct":  # struct_size set, defaults from *_init where it takes no more than the size
                 lines.append(f"{base} {field}; memset(&{field}, 0, sizeof {field});")
+                init = f"o3d_{base[4:-2]}_init"
+                if any(x["name"] == "struct_size" for x in self.structs[base]["fields"]):
+                    if init in self.inits and len(self.inits[init]["params"]) == 2:
+                        lines.append(f"O3DX_CHECK({init}(&{field}, (uint32_t)sizeof {field}));")
+                    else:
+                        lines.append(f"{field}.struct_size = (uint32_t)sizeof {field};")
                 args[ps.index(p)] = f"&{field}"
             elif kind == "fixed":
                 lines.append(f"o3dx_out_{ELEM[base]} {field} = o3dx_alloc_{ELEM[base]}({p['array']});")
@@ -314,6 +322,7 @@ class Gen:
             code.append(f"  {name} *{verb}({decl}) {{")
             code.append(f"    {kind} {' , '.join(x + ' = {0, 0, 0}' for x in fields)};")
             result_type = (name, [(x, kind, "view", None, None) for x in fields])
+            self.view_results.add(name)  # named after its function: SearchResultView
             ret = None
         code += [f"    {l}" for l in lines] + [f"    {b}" for b in body] + ["  fail:"]
         if ret:
@@ -421,7 +430,10 @@ class Gen:
             o.append(f"%nodefaultctor {name};")
             verb = self.noun_of("o3d_" + name[5:-7])[1]
             clash = sum(1 for n2, _ in results if self.noun_of("o3d_" + n2[5:-7])[1] == verb) > 1
-            o.append(f"%rename({camel(name[5:-7] if clash else verb)}Result) {name};")
+            if name in self.view_results:
+                o.append(f"%rename({camel(name[5:-7])}) {name};")
+            else:
+                o.append(f"%rename({camel(name[5:-7] if clash else verb)}Result) {name};")
             o.append(f"typedef struct {{}} {name};")
             o.append(f"%extend {name} {{")
             frees = []

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * o3d.i: the ONE SWIG interface of the C# and Java bindings. The classes themselves (PointCloud,
- * TriangleMesh, KDTreeFlann, ..., the options structs, the module class Library) come from
- * o3d_generated.i, which tools/gen_swig_interface.py writes at build time from the C headers.
- * This file holds what the generated part relies on, the same for both languages:
+ * o3d.i: the ONE SWIG interface of the C# and Java bindings, hand-written. The classes themselves
+ * (PointCloud, TriangleMesh, KDTreeFlann, ..., the options structs, the module class Library) are
+ * emitted at build time from the C headers by tools/gen_swig_interface.py (the file it writes is
+ * included at the end). This file holds what they rely on, the same for both languages:
  *   o3dx_in_<e>   an array argument (pointer + length; the managed array is pinned, never copied)
  *   o3dx_out_<e>  an array result (copied once into a managed array; `owned` buffers are freed)
  *   o3dx_view     a borrowed view (*_view functions): C# struct View, Java direct ByteBuffer

@@ -116,7 +116,7 @@ static partial class Test
                 using (var one = Knn(1))
                 using (var res = tree.Search(queries.Select(x => (float)x).ToArray(), one, 0))
                 using (var counts = res.Counts())
-                using (var view = res.View())
+                using (SearchResultView view = res.View())
                 {
                     Check(counts.NumQueries() == 20 && counts.Total() == 20, "counts");
                     Check(view.Offsets().Rows == 21 && view.Indices().Rows == 20 && view.Distances2().Bytes == 160, "view rows");

@@ -334,6 +334,24 @@ static partial class Test
                 var e = obb.GetExtent(); Array.Sort(e);
                 AllNear(e, new double[] { 2, 3, 4 }, 1e-9, "PCA extents");
             }
+            // PCA box of a 2 x 3 x 4 block (corners + 2 inner points): volume 24, extents {2, 3, 4}, orthonormal R.
+            var pts = new List<double>();
+            for (int c = 0; c < 8; c++) { pts.Add(2 * (c & 1)); pts.Add(3 * ((c >> 1) & 1)); pts.Add(4 * ((c >> 2) & 1)); }
+            pts.AddRange(new double[] { 1, 1.5, 2, 0.5, 0.5, 0.5 });
+            using (var obb = OrientedBoundingBox.CreateFromPoints(pts.ToArray(), 0))
+            {
+                Near(obb.GetExtent().Aggregate(1.0, (a, b) => a * b), 24, 1e-9, "PCA volume");
+                var e = obb.GetExtent(); Array.Sort(e);
+                AllNear(e, new double[] { 2, 3, 4 }, 1e-9, "PCA extents of the block");
+                AllNear(obb.GetCenter(), new[] { 1, 1.5, 2 }, 1e-9, "PCA center");
+                var R = obb.GetR();
+                for (int i = 0; i < 3; i++)
+                    for (int j = 0; j < 3; j++)
+                        Near(R[i] * R[j] + R[3 + i] * R[3 + j] + R[6 + i] * R[6 + j], i == j ? 1 : 0, 1e-9, "R^T R");
+                Func<double[], IEnumerable<string>> rows = a => Enumerable.Range(0, a.Length / 3)
+                    .Select(i => string.Join(",", a.Skip(3 * i).Take(3).Select(x => Math.Round(x, 6).ToString("R")))).OrderBy(x => x);
+                Check(rows(obb.GetBoxPoints()).SequenceEqual(rows(pts.Take(24).ToArray())), "PCA box corners are the block's");
+            }
             Throws<O3dException>(() => OrientedBoundingBox.CreateFromPoints(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, 0), "3 points");
             using (var o = new OrientedBoundingBox()) ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => o.SetR(new double[8]), "R of 8 values");
         });
@@ -391,10 +409,22 @@ static partial class Test
                 using (var root = tree.GetRoot()) { Near(root.Size(), 1.01, 1e-12, "root size"); Check(root.MaxDepth() == 2, "depth"); }
                 Check(tree.NumLeafNodes() == 2, "2 leaves");
                 using (var leaf = tree.LocateLeafNode(new[] { 0.05, 0.05, 0.05 }))
+                using (var info = leaf.Info())
                 {
-                    Check(leaf.Indices().SequenceEqual(new[] { 0, 2, 4 }), "leaf indices");
+                    Check(leaf.Found() && leaf.Indices().SequenceEqual(new[] { 0, 2, 4 }), "leaf indices");
                     AllNear(leaf.Color(), new[] { 0.3, 0.3, 0 }, 1e-12, "mean color");
+                    AllNear(info.GetOrigin(), new double[] { 0, 0, 0 }, 0, "leaf origin");
+                    Near(info.Size, 0.2525, 1e-12, "leaf size");
+                    Check(info.Depth == 2 && info.ChildIndex == 0, "depth / child");
                 }
+                using (var leaf = tree.LocateLeafNode(new[] { 0.95, 0.95, 0.95 }))
+                using (var info = leaf.Info())
+                {
+                    Check(leaf.Found() && leaf.Indices().SequenceEqual(new[] { 1, 3 }) && info.ChildIndex == 7, "far leaf");
+                    AllNear(info.GetOrigin(), new[] { 0.7575, 0.7575, 0.7575 }, 1e-12, "far leaf origin");
+                }
+                using (var leaf = tree.LocateLeafNode(new[] { 0.5, 0.5, 0.5 })) Check(!leaf.Found(), "empty cell");
+                using (var leaf = tree.LocateLeafNode(new double[] { 5, 5, 5 })) Check(!leaf.Found(), "outside the root");
                 ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => tree.LocateLeafNode(new[] { double.NaN, 0, 0 }), "NaN point");
             }
             ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => Octree.Create(0), "max depth 0");

@@ -294,6 +294,8 @@ static partial class Test
         });
 
         PortedTests(); // Ported.cs
+        RegistrationPipelineTests(); // RegistrationPipelineTest.cs
+        CameraRgbdTests(); // CameraRgbdTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

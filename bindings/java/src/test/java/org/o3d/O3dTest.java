@@ -156,6 +156,18 @@ class O3dTest {
                 for (int q = 0; q < 20; q++) assertEquals(idx[q * k], nearest[q], "f32 nearest " + q);
                 assertEquals(21, raw.getOffsets().length);
                 assertEquals(20, raw.getDistances2().length);
+                try (SearchResultView view = raw.view()) { // zero-copy views of the same arrays
+                    int[] vi = new int[20];
+                    long[] vo = new long[21];
+                    double[] vd = new double[20];
+                    view.indices().asIntBuffer().get(vi);
+                    view.offsets().asLongBuffer().get(vo);
+                    view.distances2().asDoubleBuffer().get(vd);
+                    assertArrayEquals(nearest, vi);
+                    assertArrayEquals(raw.getOffsets(), vo);
+                    assertArrayEquals(raw.getDistances2(), vd, 0);
+                    assertEquals(160, view.distances2().capacity());
+                }
             }
             try (SearchParam r = radius(0.1); SearchResult rad = tree.search(queries, r, 0)) {
                 long[] ro = rad.getOffsets();

@@ -156,10 +156,10 @@ class DoubleVector(_Vector):
 class VerbosityLevel(enum.IntEnum):
     """Log levels, most severe first (values of the C O3D_LOG_* constants)."""
 
-    Error = 0
-    Warning = 1
-    Info = 2
-    Debug = 3
+    Error = _o3d.O3D_LOG_ERROR
+    Warning = _o3d.O3D_LOG_WARNING
+    Info = _o3d.O3D_LOG_INFO
+    Debug = _o3d.O3D_LOG_DEBUG
 
 
 def set_verbosity_level(verbosity_level):

@@ -46,6 +46,8 @@ BufferPtr encode(const PyPointCloud& pcd, const std::string& fmt, bool write_asc
 void declare_io(py::module_&) {}
 
 void define_io(py::module_& m) {
+    const o3d_read_options_t rd = init_of(&o3d_read_options_init);
+    const o3d_write_options_t wd = init_of(&o3d_write_options_init);
     m.def(
         "read_point_cloud",
         [](py::handle filename, py::handle format, bool remove_nan_points, bool remove_infinite_points,
@@ -57,8 +59,8 @@ void define_io(py::module_& m) {
             check(s, path);
             return PyPointCloud(adopt(out));
         },
-        py::arg("filename"), py::arg("format") = "auto", py::arg("remove_nan_points") = false,
-        py::arg("remove_infinite_points") = false, py::arg("print_progress") = false,
+        py::arg("filename"), py::arg("format") = "auto", py::arg("remove_nan_points") = rd.remove_nan_points != 0,
+        py::arg("remove_infinite_points") = rd.remove_infinite_points != 0, py::arg("print_progress") = false,
         "Read a cloud (ply, pcd, xyz, xyzn, xyzrgb, pts; 'auto' = from the extension). Unlike Open3D, a "
         "failure raises (O3DFileNotFoundError, O3DIOError, ParseError, UnsupportedError) instead of returning an "
         "empty cloud.");
@@ -78,8 +80,9 @@ void define_io(py::module_& m) {
             check(s, path);
             return true;
         },
-        py::arg("filename"), py::arg("pointcloud"), py::arg("format") = "auto", py::arg("write_ascii") = false,
-        py::arg("compressed") = false, py::arg("print_progress") = false,
+        py::arg("filename"), py::arg("pointcloud"), py::arg("format") = "auto",
+        py::arg("write_ascii") = wd.write_ascii != 0, py::arg("compressed") = wd.compressed != 0,
+        py::arg("print_progress") = false,
         "Write a cloud; returns True (failures raise, e.g. O3DIOError).");
     m.def(
         "read_point_cloud_from_bytes",
@@ -93,7 +96,8 @@ void define_io(py::module_& m) {
             check(nogil([&] { return o3d_io_read_point_cloud_from_memory(&out, p, size, format.c_str(), &o); }));
             return PyPointCloud(adopt(out));
         },
-        py::arg("data"), py::arg("format"), py::arg("remove_nan_points") = false, py::arg("remove_infinite_points") = false,
+        py::arg("data"), py::arg("format"), py::arg("remove_nan_points") = rd.remove_nan_points != 0,
+        py::arg("remove_infinite_points") = rd.remove_infinite_points != 0,
         "Decode a cloud from bytes in the given format (required: there is no file extension).");
     m.def(
         "write_point_cloud_to_bytes",
@@ -108,7 +112,8 @@ void define_io(py::module_& m) {
             check(o3d_buffer_get_data(reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size, buf.get()));
             return out;
         },
-        py::arg("pointcloud"), py::arg("format"), py::arg("write_ascii") = false, py::arg("compressed") = false,
+        py::arg("pointcloud"), py::arg("format"), py::arg("write_ascii") = wd.write_ascii != 0,
+        py::arg("compressed") = wd.compressed != 0,
         "Encode a cloud in the given format into bytes.");
     m.def(
         "write_point_cloud_to_buffer",
@@ -123,7 +128,8 @@ void define_io(py::module_& m) {
             a.attr("setflags")(py::arg("write") = false);
             return a;
         },
-        py::arg("pointcloud"), py::arg("format"), py::arg("write_ascii") = false, py::arg("compressed") = false,
+        py::arg("pointcloud"), py::arg("format"), py::arg("write_ascii") = wd.write_ascii != 0,
+        py::arg("compressed") = wd.compressed != 0,
         "As write_point_cloud_to_bytes, as a read-only uint8 array sharing the library's buffer (no copy).");
 }
 

@@ -51,6 +51,8 @@ const o3d_image_t* image_arg(const PyImage& img) {
 }
 
 void define_mesh_io(py::module_& m) {
+    const o3d_mesh_read_options_t rd = init_of(&o3d_mesh_read_options_init);
+    const o3d_mesh_write_options_t wd = init_of(&o3d_mesh_write_options_init);
     m.def(
         "read_triangle_mesh",
         [](py::handle filename, bool enable_post_processing, bool /*print_progress*/, py::handle format) {
@@ -60,8 +62,8 @@ void define_mesh_io(py::module_& m) {
             check(nogil([&] { return o3d_io_read_triangle_mesh(&out, path.c_str(), fmt.c_str(), &o); }), path);
             return PyTriangleMesh(out);
         },
-        py::arg("filename"), py::arg("enable_post_processing") = false, py::arg("print_progress") = false,
-        py::arg("format") = "auto",
+        py::arg("filename"), py::arg("enable_post_processing") = rd.enable_post_processing != 0,
+        py::arg("print_progress") = false, py::arg("format") = "auto",
         "Read a mesh (ply, obj with its .mtl and textures, stl, off, gltf, glb; format 'auto' = from the "
         "extension). Failures raise. print_progress is accepted for Open3D compatibility.");
     m.def(
@@ -80,9 +82,11 @@ void define_mesh_io(py::module_& m) {
             check(s, path);
             return true;
         },
-        py::arg("filename"), py::arg("mesh"), py::arg("write_ascii") = false, py::arg("compressed") = false,
-        py::arg("write_vertex_normals") = true, py::arg("write_vertex_colors") = true,
-        py::arg("write_triangle_uvs") = true, py::arg("print_progress") = false, py::arg("format") = "auto",
+        py::arg("filename"), py::arg("mesh"), py::arg("write_ascii") = wd.write_ascii != 0,
+        py::arg("compressed") = wd.compressed != 0, py::arg("write_vertex_normals") = wd.write_vertex_normals != 0,
+        py::arg("write_vertex_colors") = wd.write_vertex_colors != 0,
+        py::arg("write_triangle_uvs") = wd.write_triangle_uvs != 0, py::arg("print_progress") = false,
+        py::arg("format") = "auto",
         "Write a mesh (OBJ also writes its .mtl and PNG textures); returns True, failures raise.");
     m.def(
         "read_triangle_mesh_from_bytes",
@@ -93,7 +97,7 @@ void define_mesh_io(py::module_& m) {
             check(nogil([&] { return o3d_io_read_triangle_mesh_from_memory(&out, b.data, b.size, format.c_str(), &o); }));
             return PyTriangleMesh(out);
         },
-        py::arg("data"), py::arg("format"), py::arg("enable_post_processing") = false,
+        py::arg("data"), py::arg("format"), py::arg("enable_post_processing") = rd.enable_post_processing != 0,
         "Decode a mesh from bytes: 'ply', 'stl', 'off', 'obj' (no materials) or 'glb'.");
     m.def(
         "write_triangle_mesh_to_bytes",
@@ -106,9 +110,10 @@ void define_mesh_io(py::module_& m) {
             });
             return to_bytes(buf);
         },
-        py::arg("mesh"), py::arg("format"), py::arg("write_ascii") = false, py::arg("compressed") = false,
-        py::arg("write_vertex_normals") = true, py::arg("write_vertex_colors") = true,
-        py::arg("write_triangle_uvs") = true, "Encode a mesh in the given format into bytes.");
+        py::arg("mesh"), py::arg("format"), py::arg("write_ascii") = wd.write_ascii != 0,
+        py::arg("compressed") = wd.compressed != 0, py::arg("write_vertex_normals") = wd.write_vertex_normals != 0,
+        py::arg("write_vertex_colors") = wd.write_vertex_colors != 0,
+        py::arg("write_triangle_uvs") = wd.write_triangle_uvs != 0, "Encode a mesh in the given format into bytes.");
 }
 
 void define_image_io(py::module_& m) {

@@ -180,6 +180,34 @@ o3d_search_param_t hybrid_param(double radius, int32_t max_nn) {
     return s.p;
 }
 
+size_t tree_size(const KDTree& self) {
+    size_t n = 0;
+    if (self.tree) check(o3d_kdtree_size(&n, self.tree.get()));
+    return n;
+}
+
+/// One query, four ways (Open3D's search_{,knn_,radius_,hybrid_}vector_<3d|xd>): `run(self, query, param)`
+/// under a KDTreeSearchParam*, knn, radius, or radius and max_nn.
+template <typename Run>
+void def_single_searches(py::class_<KDTree>& cls, const std::string& suffix, Run run, const char* knn_doc) {
+    cls.def(("search_vector_" + suffix).c_str(),
+            [run](const KDTree& self, py::handle query, py::handle search_param) {
+                return run(self, query, to_search_param(search_param));
+            },
+            py::arg("query"), py::arg("search_param"))
+        .def(("search_knn_vector_" + suffix).c_str(),
+             [run](const KDTree& self, py::handle query, int32_t knn) { return run(self, query, knn_param(knn)); },
+             py::arg("query"), py::arg("knn"), knn_doc)
+        .def(("search_radius_vector_" + suffix).c_str(),
+             [run](const KDTree& self, py::handle query, double radius) { return run(self, query, radius_param(radius)); },
+             py::arg("query"), py::arg("radius"))
+        .def(("search_hybrid_vector_" + suffix).c_str(),
+             [run](const KDTree& self, py::handle query, double radius, int32_t max_nn) {
+                 return run(self, query, hybrid_param(radius, max_nn));
+             },
+             py::arg("query"), py::arg("radius"), py::arg("max_nn"));
+}
+
 }  // namespace
 
 o3d_search_param_t to_search_param(py::handle obj) {
@@ -244,8 +272,13 @@ void define_kdtree(py::module_& m) {
             return "KDTreeSearchParamHybrid(radius=" + std::to_string(s.p.radius) + ", max_nn=" + std::to_string(s.p.knn) + ")";
         });
 
-    static_cast<py::class_<KDTree>>(m.attr("KDTreeFlann"))
-        .def(py::init<>(), "An empty tree; call set_geometry() before searching.")
+    auto tree = static_cast<py::class_<KDTree>>(m.attr("KDTreeFlann"));
+    def_single_searches(tree, "3d", &single,
+                        "(k, indices, distances2) of the knn nearest points, nearest first (squared distances).");
+    def_single_searches(tree, "xd", &single_xd,
+                        "(k, indices, distances2) of the knn nearest points to a query of the tree's dimension, "
+                        "nearest first.");
+    tree.def(py::init<>(), "An empty tree; call set_geometry() before searching.")
         .def(py::init([](py::handle data) { return KDTree{tree_from_data(data)}; }), py::arg("data"),
              "A tree over a PointCloud's points, a Feature's descriptors, or an (N, d) array (float32 kept for d = 3).")
         .def(
@@ -263,66 +296,14 @@ void define_kdtree(py::module_& m) {
             },
             py::arg("feature"), "Index the descriptors of a Feature (of its dimension).")
         .def(
-            "search_vector_xd",
-            [](const KDTree& self, py::handle query, py::handle search_param) {
-                return single_xd(self, query, to_search_param(search_param));
-            },
-            py::arg("query"), py::arg("search_param"))
-        .def(
-            "search_knn_vector_xd",
-            [](const KDTree& self, py::handle query, int32_t knn) { return single_xd(self, query, knn_param(knn)); },
-            py::arg("query"), py::arg("knn"),
-            "(k, indices, distances2) of the knn nearest points to a query of the tree's dimension, nearest first.")
-        .def(
-            "search_radius_vector_xd",
-            [](const KDTree& self, py::handle query, double radius) { return single_xd(self, query, radius_param(radius)); },
-            py::arg("query"), py::arg("radius"))
-        .def(
-            "search_hybrid_vector_xd",
-            [](const KDTree& self, py::handle query, double radius, int32_t max_nn) {
-                return single_xd(self, query, hybrid_param(radius, max_nn));
-            },
-            py::arg("query"), py::arg("radius"), py::arg("max_nn"))
-        .def(
             "set_matrix_data",
             [](KDTree& self, py::handle data) {
                 self.tree = tree_from_data(data);
                 return true;
             },
             py::arg("data"), "Index an (N, d) array (one point per row).")
-        .def("size",
-             [](const KDTree& self) {
-                 size_t n = 0;
-                 if (self.tree) check(o3d_kdtree_size(&n, self.tree.get()));
-                 return n;
-             })
-        .def("__len__",
-             [](const KDTree& self) {
-                 size_t n = 0;
-                 if (self.tree) check(o3d_kdtree_size(&n, self.tree.get()));
-                 return n;
-             })
-        .def(
-            "search_vector_3d",
-            [](const KDTree& self, py::handle query, py::handle search_param) {
-                return single(self, query, to_search_param(search_param));
-            },
-            py::arg("query"), py::arg("search_param"))
-        .def(
-            "search_knn_vector_3d",
-            [](const KDTree& self, py::handle query, int32_t knn) { return single(self, query, knn_param(knn)); },
-            py::arg("query"), py::arg("knn"),
-            "(k, indices, distances2) of the knn nearest points, nearest first (squared distances).")
-        .def(
-            "search_radius_vector_3d",
-            [](const KDTree& self, py::handle query, double radius) { return single(self, query, radius_param(radius)); },
-            py::arg("query"), py::arg("radius"))
-        .def(
-            "search_hybrid_vector_3d",
-            [](const KDTree& self, py::handle query, double radius, int32_t max_nn) {
-                return single(self, query, hybrid_param(radius, max_nn));
-            },
-            py::arg("query"), py::arg("radius"), py::arg("max_nn"))
+        .def("size", &tree_size)
+        .def("__len__", &tree_size)
         .def(
             "search",
             [](const KDTree& self, py::handle queries, py::handle search_param, int32_t num_threads) {

@@ -258,7 +258,7 @@ void define_pose_graph(py::module_& m) {
         .def(
             "OptimizePoseGraph",
             [](const Method& self, PyPoseGraph& graph, py::handle criteria, py::handle option) {
-                optimize(graph, py::cast(self), criteria, option, py::none(), 0);
+                optimize(graph, py::cast(self), criteria, option, py::none(), defaults().num_threads);
             },
             py::arg("pose_graph"), py::arg("criteria"), py::arg("option"), "Optimize pose_graph in place with this method.");
     static_cast<py::class_<GaussNewton, Method>>(m.attr("GlobalOptimizationGaussNewton"))
@@ -345,7 +345,10 @@ void define_pose_graph(py::module_& m) {
 
     m.def("_global_optimization", &optimize, py::arg("pose_graph"), py::arg("method") = py::none(),
           py::arg("criteria") = py::none(), py::arg("option") = py::none(), py::arg("progress") = py::none(),
-          py::arg("num_threads") = 0);
+          py::arg("num_threads") = defaults().num_threads);
+    m.attr("_global_optimization_defaults") = py::dict(py::arg("num_threads") = defaults().num_threads);
+    m.def("_pose_graph_edge_defaults", [] { return edge_tuple(init_of(&o3d_pose_graph_edge_init)); },
+          "(source, target, transformation, information, uncertain, confidence) of o3d_pose_graph_edge_init.");
     m.def(
         "read_pose_graph",
         [](py::handle filename) {

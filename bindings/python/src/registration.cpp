@@ -337,9 +337,10 @@ void define_registration(py::module_& m) {
                    "\nAccess transformation to get result.";
         });
 
+    m.attr("_icp_defaults") = py::dict(py::arg("num_threads") = dicp.num_threads);  // for the Python wrappers
     m.def("_registration_icp", &icp, py::arg("source"), py::arg("target"), py::arg("max_correspondence_distance"),
           py::arg("init") = py::none(), py::arg("estimation_method") = py::none(), py::arg("criteria") = py::none(),
-          py::arg("progress") = py::none(), py::arg("num_threads") = 0,
+          py::arg("progress") = py::none(), py::arg("num_threads") = dicp.num_threads,
           "ICP with any estimation; progress(fraction) is called after each iteration and cancels when it returns "
           "True or raises.");
     m.def(

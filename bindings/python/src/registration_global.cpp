@@ -330,21 +330,24 @@ void define_registration_global(py::module_& m) {
             name, [flag = flag](const FgrOption& f) { return f.o.*flag != 0; },
             [flag = flag](FgrOption& f, bool v) { f.o.*flag = v ? 1 : 0; });
 
+    // Defaults of the Python wrappers (o3d/pipelines/registration.py).
+    m.attr("_ransac_defaults") = py::dict(py::arg("ransac_n") = rd.ransac_n, py::arg("num_threads") = rd.num_threads);
+    m.attr("_fgr_defaults") = py::dict(py::arg("num_threads") = fd.o.num_threads);
     m.def("_registration_ransac_based_on_feature_matching", &ransac_features, py::arg("source"), py::arg("target"),
           py::arg("source_feature"), py::arg("target_feature"), py::arg("mutual_filter"),
           py::arg("max_correspondence_distance"), py::arg("estimation_method") = py::none(), py::arg("ransac_n") = rd.ransac_n,
           py::arg("checkers") = py::none(), py::arg("criteria") = py::none(), py::arg("seed") = py::none(),
-          py::arg("num_threads") = 0, py::arg("progress") = py::none());
+          py::arg("num_threads") = rd.num_threads, py::arg("progress") = py::none());
     m.def("_registration_ransac_based_on_correspondence", &ransac_corres, py::arg("source"), py::arg("target"),
           py::arg("corres"), py::arg("max_correspondence_distance"), py::arg("estimation_method") = py::none(),
           py::arg("ransac_n") = rd.ransac_n, py::arg("checkers") = py::none(), py::arg("criteria") = py::none(),
-          py::arg("seed") = py::none(), py::arg("num_threads") = 0, py::arg("progress") = py::none());
+          py::arg("seed") = py::none(), py::arg("num_threads") = rd.num_threads, py::arg("progress") = py::none());
     m.def("_registration_fgr_based_on_feature_matching", &fgr_features, py::arg("source"), py::arg("target"),
           py::arg("source_feature"), py::arg("target_feature"), py::arg("option") = py::none(),
-          py::arg("seed") = py::none(), py::arg("num_threads") = 0, py::arg("progress") = py::none());
+          py::arg("seed") = py::none(), py::arg("num_threads") = fd.o.num_threads, py::arg("progress") = py::none());
     m.def("_registration_fgr_based_on_correspondence", &fgr_corres, py::arg("source"), py::arg("target"),
-          py::arg("corres"), py::arg("option") = py::none(), py::arg("seed") = py::none(), py::arg("num_threads") = 0,
-          py::arg("progress") = py::none());
+          py::arg("corres"), py::arg("option") = py::none(), py::arg("seed") = py::none(),
+          py::arg("num_threads") = fd.o.num_threads, py::arg("progress") = py::none());
     m.def(
         "_random_seed",
         [](py::handle seed) {

@@ -264,6 +264,27 @@ void define_trianglemesh_processing(py::module_& m) {
                 return primitive([&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_icosahedron(out, radius); });
             },
             py::arg("radius") = 1.0, py::arg("create_uv_map") = false);
+    const o3d_mobius_options_t mo = init_of(&o3d_mobius_options_init);
+    cls.def_static(
+        "create_mobius",
+        [](int64_t length_split, int64_t width_split, int64_t twists, double raidus, double flatness, double width,
+           double scale) {
+            o3d_mobius_options_t o = init_of(&o3d_mobius_options_init);
+            o.length_split = to_i32(length_split, "length_split");
+            o.width_split = to_i32(width_split, "width_split");
+            o.twists = to_i32(twists, "twists");
+            o.radius = raidus;
+            o.flatness = flatness;
+            o.width = width;
+            o.scale = scale;
+            return primitive([&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_mobius(out, &o); });
+        },
+        py::arg("length_split") = mo.length_split, py::arg("width_split") = mo.width_split,
+        py::arg("twists") = mo.twists, py::arg("raidus") = mo.radius, py::arg("flatness") = mo.flatness,
+        py::arg("width") = mo.width, py::arg("scale") = mo.scale,
+        "A twisted band about the z axis: length_split columns of width_split vertices; an odd number of twists "
+        "makes a one-sided Moebius strip. ``raidus`` (sic, Open3D's keyword) is the radius of the band's centre "
+        "circle.");
 }
 
 }  // namespace o3dpy

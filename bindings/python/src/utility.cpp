@@ -41,6 +41,11 @@ void declare_utility(py::module_& m) {
     m.def("_version_tuple",
           []() { return py::make_tuple(o3d_version_major(), o3d_version_minor(), o3d_version_patch()); },
           "(major, minor, patch) of the loaded libo3d.");
+    // The log levels, for o3d.utility.VerbosityLevel.
+    m.attr("O3D_LOG_ERROR") = O3D_LOG_ERROR;
+    m.attr("O3D_LOG_WARNING") = O3D_LOG_WARNING;
+    m.attr("O3D_LOG_INFO") = O3D_LOG_INFO;
+    m.attr("O3D_LOG_DEBUG") = O3D_LOG_DEBUG;
 }
 
 void define_utility(py::module_& m) {

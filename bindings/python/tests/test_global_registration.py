@@ -247,3 +247,17 @@ def test_bad_arguments_raise(scene):
         reg.registration_fgr_based_on_feature_matching(source, target, fs, ft, option=reg.RANSACConvergenceCriteria())
     with pytest.raises(o3d.InvalidArgumentError):
         reg.CorrespondenceCheckerBasedOnDistance(nan).Check(source, target, [(0, 0)], np.identity(4))
+
+
+def test_python_wrapper_defaults_match_open3d_and_the_c_library():
+    import inspect
+
+    ransac = inspect.signature(reg.registration_ransac_based_on_feature_matching).parameters
+    assert ransac["ransac_n"].default == 3 and ransac["num_threads"].default == 0
+    assert inspect.signature(reg.registration_ransac_based_on_correspondence).parameters["ransac_n"].default == 3
+    assert inspect.signature(reg.registration_icp).parameters["num_threads"].default == 0
+    assert inspect.signature(reg.global_optimization).parameters["num_threads"].default == 0
+    edge = reg.PoseGraphEdge()
+    assert (edge.uncertain, edge.confidence) == (False, 1.0)
+    np.testing.assert_array_equal(edge.transformation, np.identity(4))
+    np.testing.assert_array_equal(edge.information, np.identity(6))

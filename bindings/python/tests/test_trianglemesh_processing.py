@@ -69,6 +69,30 @@ def test_primitive_keywords_and_errors():
         TM.create_sphere(resolution=0)
 
 
+def test_create_mobius():
+    m = TM.create_mobius()  # Open3D's defaults: length_split=70, width_split=15, twists=1
+    assert len(m.vertices) == 70 * 15
+    assert len(m.triangles) == 2 * 70 * 14
+    assert m.euler_poincare_characteristic() == 0
+    assert not m.is_orientable()
+    assert m.is_edge_manifold() and m.is_vertex_manifold()
+    band = TM.create_mobius(length_split=20, width_split=4, twists=2)
+    assert (len(band.vertices), len(band.triangles)) == (80, 120)
+    assert band.euler_poincare_characteristic() == 0
+    assert band.is_orientable()
+    # Open3D's keyword is spelt `raidus`; it scales the centre circle (with width 0.5 the band spans 2 +- 0.25).
+    wide = TM.create_mobius(raidus=2.0, width=0.5, flatness=0.0)
+    r = np.linalg.norm(np.asarray(wide.vertices)[:, :2], axis=1)
+    assert r.min() == pytest.approx(1.75) and r.max() == pytest.approx(2.25)
+    np.testing.assert_allclose(np.asarray(wide.vertices)[:, 2], 0.0)
+    for bad in (dict(length_split=2), dict(width_split=1), dict(twists=-1), dict(raidus=0.0), dict(width=-1.0),
+                dict(scale=0.0), dict(flatness=float("nan"))):
+        with pytest.raises(ValueError):
+            TM.create_mobius(**bad)
+    with pytest.raises(TypeError):
+        TM.create_mobius(radius=1.0)  # Open3D has no `radius` keyword here
+
+
 def test_subdivision_matches_open3d():
     check(TM.create_tetrahedron().subdivide_midpoint(number_of_iterations=1), (10, 16), 4.618802153517008,
           9.860783840712665, 6825.0)

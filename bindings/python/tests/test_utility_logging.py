@@ -17,6 +17,8 @@ def test_verbosity_round_trip():
 def test_verbosity_default_is_warning_and_levels_match_c():
     assert [int(v) for v in (VerbosityLevel.Error, VerbosityLevel.Warning, VerbosityLevel.Info,
                              VerbosityLevel.Debug)] == [0, 1, 2, 3]
+    c = o3d._o3d  # the members are the C O3D_LOG_* constants, exported by the extension
+    assert [c.O3D_LOG_ERROR, c.O3D_LOG_WARNING, c.O3D_LOG_INFO, c.O3D_LOG_DEBUG] == [0, 1, 2, 3]
 
 
 def test_bad_verbosity_raises_value_error():

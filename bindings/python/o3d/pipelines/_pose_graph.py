@@ -84,16 +84,21 @@ class PoseGraphEdge:
 
     __slots__ = ("_graph", "_i", "_values")
 
-    def __init__(self, source_node_id=-1, target_node_id=-1, transformation=None, information=None, uncertain=False,
-                 confidence=1.0):
+    # Node ids default to -1 as Open3D's (the C edge's 0 would name a real node); the rest comes from
+    # o3d_pose_graph_edge_init.
+    _, _, _TRANSFORMATION, _INFORMATION, _UNCERTAIN, _CONFIDENCE = _o3d._pose_graph_edge_defaults()
+
+    def __init__(self, source_node_id=-1, target_node_id=-1, transformation=None, information=None,
+                 uncertain=_UNCERTAIN, confidence=_CONFIDENCE):
         if isinstance(source_node_id, PoseGraphEdge):  # copy constructor
             source_node_id, target_node_id, transformation, information, uncertain, confidence = \
                 source_node_id._get()
         self._graph = None
         self._i = -1
         self._values = (int(source_node_id), int(target_node_id),
-                        _matrix(np.identity(4) if transformation is None else transformation, 4, "transformation"),
-                        _matrix(np.identity(6) if information is None else information, 6, "information"),
+                        _matrix(self._TRANSFORMATION if transformation is None else transformation, 4,
+                                "transformation"),
+                        _matrix(self._INFORMATION if information is None else information, 6, "information"),
                         bool(uncertain), float(confidence))
 
     @classmethod

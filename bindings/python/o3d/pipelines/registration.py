@@ -49,6 +49,11 @@ from .._o3d import (  # noqa: F401
 from ._pose_graph import PoseGraphEdge, PoseGraphEdgeVector, PoseGraphNode, PoseGraphNodeVector  # noqa: F401
 
 
+# Keyword defaults from the C *_init functions (o3d_icp_options_init, o3d_ransac_options_init, ...).
+_ICP, _RANSAC, _FGR = _o3d._icp_defaults, _o3d._ransac_defaults, _o3d._fgr_defaults
+_GLOBAL_OPTIMIZATION = _o3d._global_optimization_defaults
+
+
 @contextlib.contextmanager
 def _progress(desc, print_progress, callback):
     """The C progress callable for (print_progress, callback), or None when neither is asked for."""
@@ -81,7 +86,7 @@ def _require(estimation_method, cls, function):
 
 
 def registration_icp(source, target, max_correspondence_distance, init=None, estimation_method=None,
-                     criteria=None, *, print_progress=False, callback=None, num_threads=0):
+                     criteria=None, *, print_progress=False, callback=None, num_threads=_ICP["num_threads"]):
     """Iterative closest point from ``source`` onto ``target``; returns a :class:`RegistrationResult`.
 
     ``init`` defaults to the identity, ``estimation_method`` to TransformationEstimationPointToPoint() (any
@@ -95,7 +100,7 @@ def registration_icp(source, target, max_correspondence_distance, init=None, est
 
 
 def registration_colored_icp(source, target, max_correspondence_distance, init=None, estimation_method=None,
-                             criteria=None, *, print_progress=False, callback=None, num_threads=0):
+                             criteria=None, *, print_progress=False, callback=None, num_threads=_ICP["num_threads"]):
     """Colored ICP (Park et al. 2017): both clouds need colors, the target normals. ``estimation_method``
     defaults to TransformationEstimationForColoredICP(lambda_geometric=0.968)."""
     estimation_method = _require(estimation_method, TransformationEstimationForColoredICP, "registration_colored_icp")
@@ -104,7 +109,8 @@ def registration_colored_icp(source, target, max_correspondence_distance, init=N
 
 
 def registration_generalized_icp(source, target, max_correspondence_distance, init=None, estimation_method=None,
-                                 criteria=None, *, print_progress=False, callback=None, num_threads=0):
+                                 criteria=None, *, print_progress=False, callback=None,
+                                 num_threads=_ICP["num_threads"]):
     """Generalized ICP (Segal et al. 2009). ``estimation_method`` defaults to
     TransformationEstimationForGeneralizedICP(epsilon=0.001)."""
     estimation_method = _require(estimation_method, TransformationEstimationForGeneralizedICP,
@@ -114,7 +120,7 @@ def registration_generalized_icp(source, target, max_correspondence_distance, in
 
 
 def registration_symmetric_icp(source, target, max_correspondence_distance, init=None, estimation_method=None,
-                               criteria=None, *, print_progress=False, callback=None, num_threads=0):
+                               criteria=None, *, print_progress=False, callback=None, num_threads=_ICP["num_threads"]):
     """Symmetric point-to-plane ICP (Rusinkiewicz 2019); both clouds need normals. ``estimation_method``
     defaults to TransformationEstimationSymmetric()."""
     estimation_method = _require(estimation_method, TransformationEstimationSymmetric, "registration_symmetric_icp")
@@ -137,9 +143,10 @@ def correspondences_from_features(source_features, target_features, mutual_filte
 
 
 def registration_ransac_based_on_feature_matching(source, target, source_feature, target_feature, mutual_filter,
-                                                  max_correspondence_distance, estimation_method=None, ransac_n=3,
-                                                  checkers=(), criteria=None, *, seed=None, num_threads=0,
-                                                  callback=None, print_progress=False):
+                                                  max_correspondence_distance, estimation_method=None,
+                                                  ransac_n=_RANSAC["ransac_n"], checkers=(), criteria=None, *,
+                                                  seed=None, num_threads=_RANSAC["num_threads"], callback=None,
+                                                  print_progress=False):
     """RANSAC over nearest-feature correspondences. ``estimation_method`` defaults to
     TransformationEstimationPointToPoint(False) (PointToPlane also works), ``criteria`` to
     RANSACConvergenceCriteria(100000, 0.999); every hypothesis must pass every checker. o3d extras: seed,
@@ -151,8 +158,9 @@ def registration_ransac_based_on_feature_matching(source, target, source_feature
 
 
 def registration_ransac_based_on_correspondence(source, target, corres, max_correspondence_distance,
-                                                estimation_method=None, ransac_n=3, checkers=(), criteria=None, *,
-                                                seed=None, num_threads=0, callback=None, print_progress=False):
+                                                estimation_method=None, ransac_n=_RANSAC["ransac_n"], checkers=(),
+                                                criteria=None, *, seed=None, num_threads=_RANSAC["num_threads"],
+                                                callback=None, print_progress=False):
     """RANSAC over given (source, target) index pairs (Vector2iVector, (N, 2) ndarray or list of pairs)."""
     with _progress("RANSAC", print_progress, callback) as progress:
         return _o3d._registration_ransac_based_on_correspondence(
@@ -161,7 +169,8 @@ def registration_ransac_based_on_correspondence(source, target, corres, max_corr
 
 
 def registration_fgr_based_on_feature_matching(source, target, source_feature, target_feature, option=None, *,
-                                               seed=None, num_threads=0, callback=None, print_progress=False):
+                                               seed=None, num_threads=_FGR["num_threads"], callback=None,
+                                               print_progress=False):
     """Fast Global Registration (Zhou et al. 2016) on mutual feature matches. ``option`` defaults to
     Open3D's C++ defaults (note: FastGlobalRegistrationOption() itself has decrease_mu=False, as Open3D's).
     ``seed`` (o3d extra) overrides option.seed."""
@@ -170,8 +179,8 @@ def registration_fgr_based_on_feature_matching(source, target, source_feature, t
                                                                 option, seed, num_threads, progress)
 
 
-def registration_fgr_based_on_correspondence(source, target, corres, option=None, *, seed=None, num_threads=0,
-                                             callback=None, print_progress=False):
+def registration_fgr_based_on_correspondence(source, target, corres, option=None, *, seed=None,
+                                             num_threads=_FGR["num_threads"], callback=None, print_progress=False):
     """Fast Global Registration on given (source, target) index pairs."""
     with _progress("FGR", print_progress, callback) as progress:
         return _o3d._registration_fgr_based_on_correspondence(source, target, corres, option, seed, num_threads,
@@ -179,7 +188,7 @@ def registration_fgr_based_on_correspondence(source, target, corres, option=None
 
 
 def global_optimization(pose_graph, method=None, criteria=None, option=None, *, callback=None, print_progress=False,
-                        num_threads=0):
+                        num_threads=_GLOBAL_OPTIMIZATION["num_threads"]):
     """Optimize the node poses of ``pose_graph`` in place (line process, prune uncertain edges whose confidence
     ends below option.edge_prune_threshold, optimize again); edge confidences are updated. ``method`` defaults
     to GlobalOptimizationLevenbergMarquardt(), ``criteria`` and ``option`` to their defaults. Returns a

@@ -44,7 +44,11 @@ abi_check() { tools/abi_check.sh build; }
 # The C headers are the source the bindings are derived from: every function fully documented, and
 # the Doxygen reference builds without a warning.
 capi_docs() { python3 tools/check_capi_docs.py && tools/gen_capi_reference.sh build/capi-reference; }
-coverage_check() { python3 tools/check_binding_coverage.py --lib build/capi/libo3d.so; }
+# After the Python install: Python's reach is read from the symbols its extension imports.
+coverage_check() {
+  local ext; ext=$(ls .venv/lib/python3*/site-packages/o3d/_o3d*.so 2>/dev/null | head -1)
+  python3 tools/check_binding_coverage.py --lib build/capi/libo3d.so ${ext:+--python-ext "$ext"}
+}
 python_tests() {
   [ -x .venv/bin/python ] || python3 -m venv .venv || return 1
   .venv/bin/pip install -q --upgrade pip >/dev/null 2>&1
@@ -83,8 +87,8 @@ step "ctest under ASan+UBSan" ctest_sanitized
 step "ABI check (abidiff against abi/)" abi_check
 step "C API docs and reference" capi_docs
 step "install + consumers outside the tree (CMake C/C++, pkg-config, dlopen)" scripts/check_consumers.sh build
-step "binding coverage" coverage_check
 step "python: pytest" python_tests
+step "binding coverage" coverage_check
 step "python: examples" python_examples
 step "java: maven + junit" java_tests
 step "rust: cargo test" rust_tests

@@ -295,10 +295,15 @@ void def_has(py::class_<G>& cls, const char* name, int32_t which) {
     cls.def(name, [which](const G& self) { return array_has<typename G::C>(self.h, which); });
 }
 
-/// _array_copy(which) and _readonly_view(which): the copy-out and read-only view paths of every array.
+/// _array_copy, _readonly_view, _has_array and _set_array(which, ...): every path of the array family, by
+/// the C constant `which`, for any geometry (the named properties above are built on the same helpers).
 template <typename G>
 void def_array_access(py::class_<G>& cls) {
-    cls.def("_array_copy", [](const G& self, int32_t which) { return array_copy<typename G::C>(self.h, which); },
+    cls.def("_has_array", [](const G& self, int32_t which) { return array_has<typename G::C>(self.h, which); },
+            py::arg("which"), "Whether array `which` counts (o3d_<noun>_has_array).")
+        .def("_set_array", [](G& self, int32_t which, py::handle v) { array_set(self, which, v, "_set_array"); },
+             py::arg("which"), py::arg("data"), "Replace array `which` (float32 input is converted in the one copy).")
+        .def("_array_copy", [](const G& self, int32_t which) { return array_copy<typename G::C>(self.h, which); },
             py::arg("which"), "Copy of array `which` (the C constant), not a view.")
         .def("_readonly_view", [](const G& self, int32_t which) { return array_view<typename G::C>(self.h, which, false); },
              py::arg("which"), "Read-only zero-copy view of array `which` (the C constant).");

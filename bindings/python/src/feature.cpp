@@ -113,7 +113,9 @@ void declare_feature(py::module_& m) {
 }
 
 void define_feature(py::module_& m) {
-    static_cast<py::class_<PyFeature>>(m.attr("Feature"))
+    auto cls = static_cast<py::class_<PyFeature>>(m.attr("Feature"));
+    def_array_access(cls);
+    cls
         .def(py::init<>(), "An empty (0 x 0) feature.")
         .def(py::init(&clone), py::arg("other"), "Copy constructor")
         .def("dimension", &PyFeature::dimension, "Descriptor length.")

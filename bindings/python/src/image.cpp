@@ -147,7 +147,12 @@ void define_image(py::module_& m) {
         .def_property_readonly("num_of_channels", [](const PyImage& self) { return format_of(self).channels; })
         .def_property_readonly("channels", [](const PyImage& self) { return format_of(self).channels; })
         .def_property_readonly("bytes_per_channel", [](const PyImage& self) { return format_of(self).bytes; })
-        .def("is_empty", [](const PyImage& self) { return self.get() == nullptr; })
+        .def("is_empty",
+             [](const PyImage& self) {
+                 int32_t has = 0;
+                 if (self.get()) check(o3d_image_has_array(&has, self.get(), O3D_IMAGE_DATA));
+                 return has == 0;
+             })
         .def("dimension", [](const PyImage&) { return 2; })
         .def("get_min_bound", [](const PyImage&) {
             const double z[2] = {0.0, 0.0};
@@ -229,16 +234,24 @@ void define_image(py::module_& m) {
             "_data_copy",
             [](const PyImage& self) {
                 const o3d_image_t* img = require(self, "_data_copy");
-                size_t size = 0;
-                o3d_status s = o3d_image_get_array(nullptr, 0, &size, img, O3D_IMAGE_DATA);
-                if (s != O3D_OK && s != O3D_ERROR_BUFFER_TOO_SMALL) check(s);
+                size_t size = 0, cols = 0;
+                check(o3d_image_array_shape(&size, &cols, img, O3D_IMAGE_DATA));
                 PyObject* raw = PyBytes_FromStringAndSize(nullptr, (py::ssize_t)size);
                 if (!raw) throw py::error_already_set();
                 py::bytes out = py::reinterpret_steal<py::bytes>(raw);
                 check(o3d_image_get_array(reinterpret_cast<uint8_t*>(PyBytes_AS_STRING(raw)), size, &size, img, O3D_IMAGE_DATA));
                 return out;
             },
-            "The pixel bytes, copied (o3d_image_get_data).");
+            "The pixel bytes, copied (o3d_image_get_array).")
+        .def(
+            "_set_data",
+            [](PyImage& self, py::bytes data) {
+                std::string_view bytes = data;
+                o3d_image_t* img = const_cast<o3d_image_t*>(require(self, "_set_data"));
+                check(o3d_image_set_array(img, O3D_IMAGE_DATA, reinterpret_cast<const uint8_t*>(bytes.data()),
+                                          bytes.size()));
+            },
+            py::arg("data"), "Replace the pixel bytes (exactly width * height * channels * bytes_per_channel).");
 }
 
 }  // namespace o3dpy

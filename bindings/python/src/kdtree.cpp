@@ -134,6 +134,9 @@ py::tuple batch(const KDTree& self, py::handle queries, const o3d_search_param_t
 py::tuple copy_single(const ResultPtr& r) {
     size_t nq = 0, total = 0, n = 0;
     check(o3d_search_result_counts(&nq, &total, r.get()));
+    int64_t offsets[2] = {0, 0};  // one query: its neighbours are offsets[0] .. offsets[1] - 1
+    check(o3d_search_result_get_offsets(offsets, 2, &n, r.get()));
+    if (n != 2 || offsets[1] - offsets[0] != (int64_t)total) invalid("search result: inconsistent offsets");
     py::array_t<int32_t> idx((py::ssize_t)total);
     py::array_t<double> d2((py::ssize_t)total);
     check(o3d_search_result_get_indices(idx.mutable_data(), total, &n, r.get()));

@@ -80,7 +80,14 @@ void define_voxelgrid(py::module_& m) {
                                    locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_origin(o, g); });
                                    return vec3_to_array(o);
                                })
-        .def("has_voxels", [](const PyVoxelGrid& self) { return num_voxels(self) > 0; })
+        .def("has_voxels",
+             [](const PyVoxelGrid& self) {
+                 int32_t has = 0;
+                 locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
+                     return o3d_voxelgrid_has_array(&has, g, O3D_VOXELGRID_GRID_INDEX);
+                 });
+                 return has != 0;
+             })
         .def("has_colors", [](const PyVoxelGrid&) { return true; },
              "Always True, as Open3D (every voxel has a color; black when the input had none).")
         .def("is_empty", [](const PyVoxelGrid& self) { return num_voxels(self) == 0; })
@@ -90,7 +97,10 @@ void define_voxelgrid(py::module_& m) {
         .def(
             "_get_voxel_arrays",
             [](const PyVoxelGrid& self) {
-                size_t n = num_voxels(self), got = 0;
+                size_t n = 0, cols = 0, got = 0;
+                locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
+                    return o3d_voxelgrid_array_shape(&n, &cols, g, O3D_VOXELGRID_GRID_INDEX);
+                });
                 py::array_t<int32_t> gi(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
                 py::array_t<double> co(std::vector<py::ssize_t>{(py::ssize_t)n, 3});
                 locked_const(self.h, [&](const o3d_voxelgrid_t* g) {

@@ -35,6 +35,23 @@ static partial class Test
             }
         });
 
+        Run("mesh: create_mobius through the generated classes only", () =>
+        {
+            using (var opts = new MobiusOptions())
+            {
+                Check(opts.LengthSplit == 70 && opts.Twists == 1, "defaults from o3d_mobius_options_init");
+                for (int twists = 1; twists <= 2; twists++)
+                {
+                    opts.Twists = twists;
+                    using (var m = TriangleMesh.CreateMobius(opts))
+                        Check(m.NumVertices() == 70 * 15 && m.NumTriangles() == 2 * 70 * 14 &&
+                              m.EulerPoincareCharacteristic() == 0 && m.IsOrientable() == (twists % 2 == 0), "mobius " + twists);
+                }
+                opts.Twists = -1;
+                ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => TriangleMesh.CreateMobius(opts), "negative twists");
+            }
+        });
+
         Run("mesh: primitives (counts recorded from Open3D 0.20)", () =>
         {
             Action<TriangleMesh, long, long, string> counts = (m, nv, nt, what) =>

@@ -40,6 +40,27 @@ class MeshTest {
         }
     }
 
+    /** create_mobius reaches Java through the generated classes only (no hand-written Java for it). */
+    @Test
+    void mobiusStripFromGeneratedOptions() {
+        try (MobiusOptions opts = new MobiusOptions()) {
+            assertEquals(70, opts.getLengthSplit());  // defaults from o3d_mobius_options_init
+            assertEquals(1, opts.getTwists());
+            for (int twists = 1; twists <= 2; twists++) {
+                opts.setTwists(twists);
+                try (TriangleMesh m = TriangleMesh.createMobius(opts)) {
+                    assertEquals(70 * 15, m.numVertices());
+                    assertEquals(2 * 70 * 14, m.numTriangles());
+                    assertEquals(0, m.eulerPoincareCharacteristic());
+                    assertEquals(twists % 2 == 0, m.isOrientable());
+                }
+            }
+            opts.setTwists(-1);
+            O3dException e = assertThrows(O3dException.class, () -> TriangleMesh.createMobius(opts));
+            assertEquals(Library.ERROR_INVALID_ARGUMENT, e.getStatus());
+        }
+    }
+
     @Test
     void boxAreaVolumeCounts() {
         try (TriangleMesh box = box()) {

@@ -15,14 +15,15 @@ trap 'rm -rf "$WORK"' EXIT
 "$WORK/tools/bin/pip" wheel -q --no-deps "$ROOT" -w "$WORK/raw"
 "$WORK/tools/bin/auditwheel" show "$WORK"/raw/o3d-*.whl | sed 's/^/  /'
 # The newest manylinux tag this machine's glibc allows (auditwheel picks it from the libraries' symbols).
-"$WORK/tools/bin/auditwheel" repair -q "$WORK"/raw/o3d-*.whl -w "$WORK/wheel"
+PATH="$WORK/tools/bin:$PATH" "$WORK/tools/bin/auditwheel" repair "$WORK"/raw/o3d-*.whl -w "$WORK/wheel" | tail -1
 WHEEL=$(ls "$WORK"/wheel/o3d-*.whl)
 echo "repaired wheel: $(basename "$WHEEL") ($(du -k "$WHEEL" | cut -f1) KiB)"
 "$PY" -m venv "$WORK/user"
 "$WORK/user/bin/pip" install -q numpy "$WHEEL"
 SITE=$("$WORK/user/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["platlib"])')
-# The C and C++ runtime the manylinux policy lets a wheel rely on; everything else must come from the wheel.
-RUNTIME='linux-vdso|ld-linux|libc\.so|libm\.so|libdl\.so|librt\.so|libpthread\.so|libstdc\+\+\.so|libgcc_s\.so'
+# The C and C++ runtime the manylinux policy lets a wheel rely on (its base set also holds zlib, which
+# auditwheel therefore leaves outside); everything else must come from the wheel.
+RUNTIME='linux-vdso|ld-linux|libc\.so|libm\.so|libdl\.so|librt\.so|libpthread\.so|libstdc\+\+\.so|libgcc_s\.so|libz\.so\.1'
 status=0
 for so in "$SITE"/o3d/_o3d*.so "$SITE"/o3d/libo3d*.so* "$SITE"/o3d.libs/*.so*; do
   [ -e "$so" ] || continue

@@ -78,6 +78,17 @@ def declarations(include_dir=INCLUDE_DIR):
         yield f["name"], f["header"], f["ret"], args
 
 
+def write_output(text, output):
+    """Write `text` to `output` (stdout when None), leaving an unchanged file untouched so that build
+    tools that compare timestamps do not rebuild what depends on it."""
+    if output is None:
+        sys.stdout.write(text)
+        return
+    output.parent.mkdir(parents=True, exist_ok=True)
+    if not output.exists() or output.read_text() != text:
+        output.write_text(text)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--c-names", action="store_true", help="function names as a C initializer list")
@@ -92,12 +103,7 @@ def main():
         text = json.dumps(model, indent=1) + "\n"
     else:
         text = "".join(f'{f["name"]}\t{f["header"]}\n' for f in model["functions"])
-    if args.output:
-        args.output.parent.mkdir(parents=True, exist_ok=True)
-        if not args.output.exists() or args.output.read_text() != text:
-            args.output.write_text(text)
-    else:
-        sys.stdout.write(text)
+    write_output(text, args.output)
 
 
 if __name__ == "__main__":

@@ -531,12 +531,7 @@ def main():
     if args.list_skipped:
         return list_skipped(gen)
     text = gen.emit()
-    if args.output:
-        args.output.parent.mkdir(parents=True, exist_ok=True)
-        if not args.output.exists() or args.output.read_text() != text:
-            args.output.write_text(text)
-    else:
-        sys.stdout.write(text)
+    capi_model.write_output(text, args.output)
 
 
 if __name__ == "__main__":

@@ -23,9 +23,10 @@ for project in cmake_c cmake_cpp; do
   "$WORK/$project/build/consumer_${project#cmake_}"
 done
 
-echo "--- pkgconfig_c: pkg-config --cflags --libs o3d"
+echo "--- pkgconfig_c: pkg-config --cflags --libs o3d (the C program of cmake_c, built without CMake)"
 export PKG_CONFIG_PATH="$LIBDIR/pkgconfig"
-cc -std=c99 -Wall -Werror "$WORK/pkgconfig_c/main.c" -o "$WORK/pkgconfig_c/consumer" $(pkg-config --cflags --libs o3d) \
+mkdir -p "$WORK/pkgconfig_c"
+cc -std=c99 -Wall -Werror "$WORK/cmake_c/main.c" -o "$WORK/pkgconfig_c/consumer" $(pkg-config --cflags --libs o3d) \
    -Wl,-rpath,"$(pkg-config --variable=libdir o3d)"
 "$WORK/pkgconfig_c/consumer"
 

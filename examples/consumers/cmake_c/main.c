@@ -1,4 +1,5 @@
-/* A C program built against an installed o3d through find_package(o3d): down-sample a synthetic cloud. */
+/* A C program built against an installed o3d, through find_package(o3d) (CMakeLists.txt here) and through
+ * pkg-config (scripts/check_consumers.sh): down-sample a synthetic cloud. */
 #include <o3d/o3d.h>
 #include <stdio.h>
 

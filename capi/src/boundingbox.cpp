@@ -11,6 +11,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::OrientedBoundingBox;
 
 namespace {
@@ -41,10 +43,6 @@ std::vector<Eigen::Vector3d> rows_of(const double* xyz, size_t n) {
     return points;
 }
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 }  // namespace
 

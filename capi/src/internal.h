@@ -164,6 +164,20 @@ void copy_out(const T* src, size_t count, T* out, size_t capacity, size_t* out_n
     if (count) std::memcpy(out, src, count * elements_per_item * sizeof(T));
 }
 
+/// @brief The 3 doubles at `v` as a vector; throws InvalidArgument("<name> is NULL") for NULL.
+inline Eigen::Vector3d vec3(const double* v, const char* name) {
+    require(v, name);
+    return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+/// @brief Write `v` to the 3 doubles at `out`; throws InvalidArgument("<name> is NULL") for NULL.
+inline void write3(double* out, const char* name, const Eigen::Vector3d& v) {
+    require(out, name);
+    out[0] = v.x();
+    out[1] = v.y();
+    out[2] = v.z();
+}
+
 /// @brief Throw InvalidArgument unless `x` is finite.
 void require_finite(double x, const char* name);
 

@@ -11,6 +11,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::LineSet;
 
 namespace {
@@ -39,10 +41,6 @@ void check_input(const void* data, size_t rows, size_t row_bytes, const char* na
         throw o3d::InvalidArgument(std::string(name) + ": rows = " + std::to_string(rows) + " is too large");
 }
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 o3d_lineset_t** require_out(o3d_lineset_t** out) {
     require(out, "out");

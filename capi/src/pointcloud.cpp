@@ -15,6 +15,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::PointCloud;
 using Vec3List = std::vector<Eigen::Vector3d>;
 
@@ -53,17 +55,7 @@ namespace {
 PointCloud& cloud_of(o3d_pointcloud_t* pc, const char* name = "pc") { return require(pc, name)->cloud; }
 const PointCloud& cloud_of(const o3d_pointcloud_t* pc, const char* name = "pc") { return require(pc, name)->cloud; }
 
-void write3(double* out, const char* name, const Eigen::Vector3d& v) {
-    require(out, name);
-    out[0] = v.x();
-    out[1] = v.y();
-    out[2] = v.z();
-}
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 /// @brief Hand a new cloud to the caller (`*out` stays NULL if anything before this failed).
 o3d_status give(o3d_pointcloud_t** out, PointCloud cloud) {

@@ -16,6 +16,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::capi::require_finite;
 using o3d::geometry::PointCloud;
 
@@ -60,10 +62,6 @@ o3d_status filtered(o3d_pointcloud_t** out, const PointCloud& cloud, const std::
     return O3D_OK;
 }
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 }  // namespace
 

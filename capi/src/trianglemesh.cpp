@@ -16,6 +16,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::TriangleMesh;
 
 namespace {
@@ -49,17 +51,7 @@ o3d::capi::ArraySlot<int32_t> mesh_index_slot(o3d_trianglemesh_t* h, int32_t whi
     }
 }
 
-void write3(double* out, const char* name, const Eigen::Vector3d& v) {
-    require(out, name);
-    out[0] = v.x();
-    out[1] = v.y();
-    out[2] = v.z();
-}
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 o3d_status give(o3d_trianglemesh_t** out, TriangleMesh mesh) {
     auto handle = std::make_unique<o3d_trianglemesh>();

@@ -17,6 +17,8 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::FilterScope;
 using o3d::geometry::PointCloud;
 using o3d::geometry::TriangleMesh;
@@ -53,10 +55,6 @@ FilterScope to_scope(int32_t scope) {
     return static_cast<FilterScope>(scope);
 }
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 }  // namespace
 

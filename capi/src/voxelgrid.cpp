@@ -11,16 +11,14 @@
 
 using o3d::capi::guard;
 using o3d::capi::require;
+using o3d::capi::vec3;
+using o3d::capi::write3;
 using o3d::geometry::VoxelGrid;
 
 namespace {
 
 const VoxelGrid& grid_of(const o3d_voxelgrid_t* g) { return require(g, "grid")->grid; }
 
-Eigen::Vector3d vec3(const double* v, const char* name) {
-    require(v, name);
-    return Eigen::Vector3d(v[0], v[1], v[2]);
-}
 
 o3d_voxelgrid_t** require_out(o3d_voxelgrid_t** out) {
     require(out, "out");

@@ -20,6 +20,8 @@ PACKAGES=(
   python3 python3-dev python3-venv python3-pip
   # C# and Java through SWIG
   swig mono-mcs mono-runtime openjdk-17-jdk-headless maven
+  # packages that carry their native libraries (jar, Unity, wheel): RUNPATH rewriting
+  patchelf
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is needed, builds, and runs every test suite:
 # C++ core tests, C API tests (plain and under ASan+UBSan), the dlopen test, the C++ wrapper,
-# the examples, C#, Java, Python, Rust, the ABI check and the binding-coverage check.
+# the examples, C#, Java, Python, Rust, the ABI check and the binding-coverage check, and every package
+# (install prefix, jar, Unity package, wheel, crates) used by a consumer outside the tree.
 # Environment: O3D_TEST_DATA (default ../shared/data), O3D_REQUIRE_TEST_DATA=1 (CI: missing data fails),
 # O3D_SKIP_INSTALL=1 (skip apt), O3D_JOBS (default: number of cores).
 set -uo pipefail
@@ -49,11 +50,14 @@ coverage_check() {
   local ext; ext=$(ls .venv/lib/python3*/site-packages/o3d/_o3d*.so 2>/dev/null | head -1)
   python3 tools/check_binding_coverage.py --lib build/capi/libo3d.so ${ext:+--python-ext "$ext"}
 }
+# The wheel as users get it: built, repaired by auditwheel (it carries the libraries it links), checked
+# with ldd, imported outside the tree; then the Python tests run on that very wheel.
+python_wheel() { rm -rf build-wheel && scripts/check_python_wheel.sh python3 "$ROOT/build-wheel"; }
 python_tests() {
   [ -x .venv/bin/python ] || python3 -m venv .venv || return 1
   .venv/bin/pip install -q --upgrade pip >/dev/null 2>&1
   .venv/bin/pip install -q numpy pytest || return 1
-  .venv/bin/pip install -q . || return 1
+  .venv/bin/pip install -q --force-reinstall --no-deps build-wheel/o3d-*.whl || return 1
   (cd bindings/python/tests && "$ROOT/.venv/bin/python" -m pytest -q -p no:cacheprovider)
 }
 python_examples() {
@@ -67,7 +71,8 @@ python_examples() {
       "$out/knot_samples.ply" &&
   .venv/bin/python examples/python/multiway_registration.py "$O3D_TEST_DATA/livingroom1_clean_micro"
 }
-java_tests() { (cd bindings/java && mvn -B -ntp test -Do3d.native.dir="$ROOT/build/bindings/swig"); }
+# JUnit already ran in ctest (java_junit, on the same classes, loading the natives as the jar does).
+java_package() { (cd bindings/java && mvn -B -ntp -q package -DskipTests -Do3d.swig.dir="$ROOT/build/bindings/swig"); }
 rust_tests() { (cd bindings/rust && O3D_LIB_DIR="$ROOT/build/capi" O3D_INCLUDE_DIR="$ROOT/capi/include" cargo test 2>&1); }
 rust_example() {
   local out; out=$(mktemp -d)
@@ -86,11 +91,13 @@ step "build (ASan+UBSan)" build_sanitized
 step "ctest under ASan+UBSan" ctest_sanitized
 step "ABI check (abidiff against abi/)" abi_check
 step "C API docs and reference" capi_docs
-step "install + consumers outside the tree (CMake C/C++, pkg-config, dlopen)" scripts/check_consumers.sh build
-step "python: pytest" python_tests
+step "java: mvn package (the jar with its native libraries)" java_package
+step "install + consumers outside the tree (CMake C/C++, pkg-config, dlopen, C#/Unity, Java jar)" \
+  scripts/check_consumers.sh build bindings/java/target/o3d-0.1.0.jar
+step "python: wheel (auditwheel repair, ldd, import outside the tree)" python_wheel
+step "python: pytest (on that wheel)" python_tests
 step "binding coverage" coverage_check
 step "python: examples" python_examples
-step "java: maven + junit" java_tests
 step "rust: cargo test" rust_tests
 step "rust: examples" rust_example
 step "rust: cargo package + consumer outside the tree" rust_package

@@ -87,6 +87,18 @@ O3DX_CS_OUT(u8, byte)
 %typemap(in) void * %{ $1 = $input; %}
 %typemap(csin) void * "$csinput"
 
+/* ---- IL2CPP: no reverse P/Invoke without [MonoPInvokeCallback] ---------------------------------
+ * SWIG's own exception and string helpers hand static methods without that attribute to native code,
+ * which IL2CPP refuses; bindings/swig/CMakeLists.txt turns them off (SWIG_CSHARP_NO_EXCEPTION_HELPER,
+ * SWIG_CSHARP_NO_STRING_HELPER). Errors come through O3dExceptionHelper below instead, and a returned
+ * `const char *` (borrowed from the library) is copied into a managed string on the managed side. */
+%typemap(imtype, out="global::System.IntPtr") char *, char *& "string"
+%typemap(out) char * %{ $result = $1; %}
+%typemap(csout, excode=SWIGEXCODE) char * {
+    string ret = global::System.Runtime.InteropServices.Marshal.PtrToStringAnsi($imcall);$excode
+    return ret;
+  }
+
 /* ---- errors --------------------------------------------------------------------------------- */
 %insert(runtime) %{
 typedef void (SWIGSTDCALL *o3dcs_raise_callback)(int status, const char *message);
@@ -109,6 +121,14 @@ SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback 
     static O3dExceptionHelper() { O3dCsRegisterExceptionCallback(raiseDelegate); }
   }
   static O3dExceptionHelper o3dExceptionHelper = new O3dExceptionHelper();
+
+  /// <summary>The exception a failed call left for its thread; every wrapper throws it when the call returns.</summary>
+  public class SWIGPendingException {
+    [global::System.ThreadStatic] static global::System.Exception pending;
+    public static bool Pending { get { return pending != null; } }
+    public static void Set(global::System.Exception e) { pending = e; }
+    public static global::System.Exception Retrieve() { var e = pending; pending = null; return e; }
+  }
 %}
 
 /* ---- callbacks: progress (options structs) and log ------------------------------------------ */

@@ -6,7 +6,7 @@
 dir="$1"; pom="$2"; mvn="${3:-mvn}"
 if [ -d "$HOME/.m2/repository/org/junit/jupiter/junit-jupiter-engine" ]; then
   log=$(mktemp) || exit 1
-  "$mvn" -B -ntp -o -f "$pom" test -Do3d.native.dir="$dir" 2>&1 | tee "$log"
+  "$mvn" -B -ntp -o -f "$pom" test -Do3d.swig.dir="$dir" 2>&1 | tee "$log"
   rc=$?
   # POSIX sh has no pipefail: read Maven's verdict from the log.
   if grep -q "BUILD SUCCESS" "$log"; then rm -f "$log"; exit 0; fi
@@ -14,4 +14,4 @@ if [ -d "$HOME/.m2/repository/org/junit/jupiter/junit-jupiter-engine" ]; then
   rm -f "$log"
   echo "run_maven.sh: offline resolution failed (rc $rc), retrying online"
 fi
-exec "$mvn" -B -ntp -f "$pom" test -Do3d.native.dir="$dir"
+exec "$mvn" -B -ntp -f "$pom" test -Do3d.swig.dir="$dir"

@@ -14,6 +14,9 @@ PACKAGES=(
   libeigen3-dev libflann-dev liblz4-dev liblzf-dev libqhull-dev
   # images, meshes and camera files
   libpng-dev libjpeg-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
+  # rendering: OpenGL through libepoxy, EGL (Mesa: software rendering without a display), GLFW; Xvfb for
+  # the tests that need a window
+  libepoxy-dev libglfw3-dev libegl1 libegl-mesa0 libgl1-mesa-dri libopengl0 libgl1 xvfb xauth
   # tests and checks
   libcmocka-dev libgtest-dev abigail-tools valgrind
   # python

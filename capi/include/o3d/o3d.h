@@ -22,5 +22,6 @@
 #include "o3d/lineset.h"
 #include "o3d/voxelgrid.h"
 #include "o3d/octree.h"
+#include "o3d/visualization.h"
 
 #endif /* O3D_O3D_H */

@@ -20,6 +20,7 @@ typedef struct o3d_image o3d_image_t; /**< opaque handle */
 typedef struct o3d_kdtree o3d_kdtree_t; /**< opaque handle */
 typedef struct o3d_lineset o3d_lineset_t; /**< opaque handle */
 typedef struct o3d_octree o3d_octree_t; /**< opaque handle */
+typedef struct o3d_offscreen_renderer o3d_offscreen_renderer_t; /**< opaque handle */
 typedef struct o3d_pointcloud o3d_pointcloud_t; /**< opaque handle */
 typedef struct o3d_pose_graph o3d_pose_graph_t; /**< opaque handle */
 typedef struct o3d_registration_result o3d_registration_result_t; /**< opaque handle */

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+#include "o3d/visualization/gpu_geometry.h"
+
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "o3d/utility/error.h"
+
+namespace o3d::visualization {
+namespace {
+
+struct Vertex {
+    float position[3];
+    float normal[3];
+    float color[3];
+};
+
+Vertex vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const Eigen::Vector3d& c) {
+    return {{float(p.x()), float(p.y()), float(p.z())},
+            {float(n.x()), float(n.y()), float(n.z())},
+            {float(c.x()), float(c.y()), float(c.z())}};
+}
+
+VertexBuffer make_buffer(const std::vector<Vertex>& vertices, const std::vector<uint32_t>* indices = nullptr) {
+    VertexBuffer b;
+    glGenVertexArrays(1, &b.vao);
+    glBindVertexArray(b.vao);
+    glGenBuffers(1, &b.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STATIC_DRAW);
+    const GLsizei stride = sizeof(Vertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(Vertex, color)));
+    if (indices) {
+        glGenBuffers(1, &b.ebo);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices->size() * sizeof(uint32_t)), indices->data(),
+                     GL_STATIC_DRAW);
+        b.count = GLsizei(indices->size());
+    } else {
+        b.count = GLsizei(vertices.size());
+    }
+    glBindVertexArray(0);
+    return b;
+}
+
+void check_count(size_t n, const char* what) {
+    if (n > size_t(1) << 30) throw InvalidArgument(std::string(what) + ": too many to draw (over 2^30)");
+}
+
+Eigen::Vector3d face_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double len = n.norm();
+    return len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+}
+
+/// @brief Flat-shaded triangles: three vertices of their own per triangle, with the face's normal.
+void append_flat_triangle(std::vector<Vertex>& out, const Eigen::Vector3d* p, const Eigen::Vector3d* c) {
+    const Eigen::Vector3d n = face_normal(p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) out.push_back(vertex(p[k], n, c[k]));
+}
+
+}  // namespace
+
+void VertexBuffer::release() {
+    if (ebo) glDeleteBuffers(1, &ebo);
+    if (vbo) glDeleteBuffers(1, &vbo);
+    if (vao) glDeleteVertexArrays(1, &vao);
+    *this = VertexBuffer();
+}
+
+void GpuGeometry::release() {
+    main.release();
+    smooth.release();
+    normal_lines.release();
+}
+
+GpuGeometry upload(const geometry::PointCloud& cloud, const Material& material) {
+    check_count(2 * cloud.size(), "points");
+    GpuGeometry g;
+    g.kind = GeometryKind::PointCloud;
+    g.material = material;
+    g.has_normals = cloud.has_normals();
+    g.has_colors = cloud.has_colors();
+    std::vector<Vertex> vertices;
+    vertices.reserve(cloud.size());
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < cloud.size(); ++i) {
+        if (!cloud.points[i].allFinite()) continue;  // not drawn, and not in the box
+        g.box.add(cloud.points[i]);
+        vertices.push_back(vertex(cloud.points[i], g.has_normals ? cloud.normals[i] : zero,
+                                  g.has_colors ? cloud.colors[i] : zero));
+    }
+    g.main = make_buffer(vertices);
+    if (g.has_normals) {
+        std::vector<Vertex> doubled;
+        doubled.reserve(2 * vertices.size());
+        for (const Vertex& v : vertices) {
+            doubled.push_back(v);
+            doubled.push_back(v);
+        }
+        g.normal_lines = make_buffer(doubled);
+    }
+    return g;
+}
+
+GpuGeometry upload(const geometry::TriangleMesh& mesh, const Material& material) {
+    const size_t nv = mesh.vertices.size();
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (mesh.triangles[t][k] < 0 || size_t(mesh.triangles[t][k]) >= nv)
+                throw InvalidArgument("triangle " + std::to_string(t) + " has vertex index " +
+                                      std::to_string(mesh.triangles[t][k]) + ", out of range for " +
+                                      std::to_string(nv) + " vertices");
+    check_count(3 * mesh.triangles.size(), "triangles");
+    GpuGeometry g;
+    g.kind = GeometryKind::TriangleMesh;
+    g.material = material;
+    g.has_normals = true;  // flat shading always has face normals
+    g.has_colors = mesh.has_vertex_colors();
+    for (const Eigen::Vector3d& v : mesh.vertices) g.box.add(v);
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    std::vector<Vertex> flat;
+    flat.reserve(3 * mesh.triangles.size());
+    for (const Eigen::Vector3i& t : mesh.triangles) {
+        const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+        if (!p[0].allFinite() || !p[1].allFinite() || !p[2].allFinite()) continue;
+        const Eigen::Vector3d c[3] = {g.has_colors ? mesh.vertex_colors[t[0]] : zero,
+                                      g.has_colors ? mesh.vertex_colors[t[1]] : zero,
+                                      g.has_colors ? mesh.vertex_colors[t[2]] : zero};
+        append_flat_triangle(flat, p, c);
+    }
+    g.main = make_buffer(flat);
+    if (mesh.has_vertex_normals()) {
+        std::vector<Vertex> shared;
+        shared.reserve(nv);
+        for (size_t i = 0; i < nv; ++i)
+            shared.push_back(vertex(mesh.vertices[i], mesh.vertex_normals[i], g.has_colors ? mesh.vertex_colors[i] : zero));
+        std::vector<uint32_t> indices;
+        indices.reserve(3 * mesh.triangles.size());
+        for (const Eigen::Vector3i& t : mesh.triangles) {
+            if (!mesh.vertices[t[0]].allFinite() || !mesh.vertices[t[1]].allFinite() || !mesh.vertices[t[2]].allFinite())
+                continue;
+            for (int k = 0; k < 3; ++k) indices.push_back(uint32_t(t[k]));
+        }
+        g.smooth = make_buffer(shared, &indices);
+    }
+    return g;
+}
+
+GpuGeometry upload(const geometry::LineSet& lines, const Material& material) {
+    const size_t np = lines.points.size();
+    for (size_t l = 0; l < lines.lines.size(); ++l)
+        for (int k = 0; k < 2; ++k)
+            if (lines.lines[l][k] < 0 || size_t(lines.lines[l][k]) >= np)
+                throw InvalidArgument("line " + std::to_string(l) + " has point index " +
+                                      std::to_string(lines.lines[l][k]) + ", out of range for " +
+                                      std::to_string(np) + " points");
+    check_count(2 * lines.lines.size(), "lines");
+    GpuGeometry g;
+    g.kind = GeometryKind::LineSet;
+    g.material = material;
+    g.has_colors = !lines.lines.empty() && lines.colors.size() == lines.lines.size();
+    for (const Eigen::Vector3d& p : lines.points) g.box.add(p);
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    std::vector<Vertex> vertices;
+    vertices.reserve(2 * lines.lines.size());
+    for (size_t l = 0; l < lines.lines.size(); ++l) {
+        const Eigen::Vector3d& a = lines.points[lines.lines[l][0]];
+        const Eigen::Vector3d& b = lines.points[lines.lines[l][1]];
+        if (!a.allFinite() || !b.allFinite()) continue;
+        const Eigen::Vector3d c = g.has_colors ? lines.colors[l] : zero;  // Open3D: black without colors
+        vertices.push_back(vertex(a, zero, c));
+        vertices.push_back(vertex(b, zero, c));
+    }
+    g.main = make_buffer(vertices);
+    return g;
+}
+
+GpuGeometry upload(const geometry::VoxelGrid& grid, const Material& material) {
+    check_count(36 * grid.voxels.size(), "voxels");
+    GpuGeometry g;
+    g.kind = GeometryKind::VoxelGrid;
+    g.material = material;
+    g.has_normals = true;
+    for (const geometry::Voxel& v : grid.voxels) g.has_colors = g.has_colors || !v.color.isZero();
+    // The 12 triangles of a unit cube, counter-clockwise seen from outside; corner k is (k&1, k&2, k&4).
+    static const int kCube[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    std::vector<Vertex> vertices;
+    vertices.reserve(36 * grid.voxels.size());
+    for (const geometry::Voxel& v : grid.voxels) {
+        const Eigen::Vector3d base = grid.origin + grid.voxel_size * v.grid_index.cast<double>();
+        Eigen::Vector3d corner[8];
+        for (int k = 0; k < 8; ++k)
+            corner[k] = base + grid.voxel_size * Eigen::Vector3d((k & 1) ? 1 : 0, (k & 2) ? 1 : 0, (k & 4) ? 1 : 0);
+        g.box.add(corner[0]);
+        g.box.add(corner[7]);
+        const Eigen::Vector3d c[3] = {v.color, v.color, v.color};
+        for (const auto& t : kCube) {
+            const Eigen::Vector3d p[3] = {corner[t[0]], corner[t[1]], corner[t[2]]};
+            append_flat_triangle(vertices, p, c);
+        }
+    }
+    g.main = make_buffer(vertices);
+    return g;
+}
+
+}  // namespace o3d::visualization

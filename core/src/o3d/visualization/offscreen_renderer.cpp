@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: MIT
+#include "o3d/visualization/offscreen_renderer.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include "o3d/utility/error.h"
+
+namespace o3d::visualization {
+
+/// @brief What the user asked for; resolved against the scene at each render (see visualization.h).
+struct OffscreenRenderer::CameraSetting {
+    enum class Kind { Default, Pinhole, Lookat, Fov } kind = Kind::Default;
+    camera::PinholeCameraParameters pinhole;
+    Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero(), up = Eigen::Vector3d::UnitY();
+    double scalar = 0;  // zoom, or the field of view
+};
+
+namespace {
+
+constexpr int kMaxSize = 16384;
+
+void check_gl(const char* what) {
+    const GLenum error = glGetError();
+    if (error != GL_NO_ERROR) {
+        char code[16];
+        std::snprintf(code, sizeof code, "0x%04x", unsigned(error));
+        throw std::runtime_error(std::string("OpenGL error ") + code + " in " + what);
+    }
+}
+
+void set_uniform_color(const ShaderProgram& p, ColorMode mode, const Eigen::Vector3d& color = Eigen::Vector3d::Zero()) {
+    glUniform1i(p.color_mode, int(mode));
+    glUniform3f(p.uniform_color, float(color.x()), float(color.y()), float(color.z()));
+}
+
+ColorMode jet_mode(ColorOption option) {
+    return option == ColorOption::X ? ColorMode::JetX : option == ColorOption::Y ? ColorMode::JetY : ColorMode::JetZ;
+}
+
+}  // namespace
+
+OffscreenRenderer::OffscreenRenderer(int width, int height, Backend backend)
+    : width_(width), height_(height), camera_(std::make_unique<CameraSetting>()) {
+    if (width < 1 || width > kMaxSize || height < 1 || height > kMaxSize)
+        throw InvalidArgument("renderer size must be 1..16384 pixels each way, got " + std::to_string(width) + " x " +
+                              std::to_string(height));
+    context_ = create_gl_context(backend);
+    backend_ = context_->backend();
+    CurrentContext current(*context_);
+    program_ = build_shader_program();
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glGenRenderbuffers(1, &color_buffer_);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_buffer_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_buffer_);
+    glGenRenderbuffers(1, &depth_buffer_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Unsupported("the OpenGL driver cannot make a " + std::to_string(width) + " x " +
+                          std::to_string(height) + " RGBA8 + depth32F framebuffer");
+    check_gl("creating the framebuffer");
+}
+
+OffscreenRenderer::~OffscreenRenderer() {
+    if (!context_) return;
+    CurrentContext current(*context_);
+    for (auto& entry : scene_) entry.second.release();
+    if (program_.id) glDeleteProgram(program_.id);
+    if (depth_buffer_) glDeleteRenderbuffers(1, &depth_buffer_);
+    if (color_buffer_) glDeleteRenderbuffers(1, &color_buffer_);
+    if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+}
+
+template <typename Geometry>
+void OffscreenRenderer::add(const std::string& name, const Geometry& geometry, const Material& material) {
+    check_material(material);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (name.empty()) throw InvalidArgument("a geometry needs a non-empty name");
+    if (scene_.count(name)) throw InvalidArgument("a geometry named \"" + name + "\" is already in the scene");
+    CurrentContext current(*context_);
+    GpuGeometry uploaded = upload(geometry, material);
+    try {
+        check_gl("uploading a geometry");
+        scene_.emplace(name, std::move(uploaded));
+    } catch (...) {
+        uploaded.release();
+        throw;
+    }
+}
+
+template void OffscreenRenderer::add(const std::string&, const geometry::PointCloud&, const Material&);
+template void OffscreenRenderer::add(const std::string&, const geometry::TriangleMesh&, const Material&);
+template void OffscreenRenderer::add(const std::string&, const geometry::LineSet&, const Material&);
+template void OffscreenRenderer::add(const std::string&, const geometry::VoxelGrid&, const Material&);
+
+bool OffscreenRenderer::has(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return scene_.count(name) > 0;
+}
+
+void OffscreenRenderer::remove(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = scene_.find(name);
+    if (it == scene_.end()) throw InvalidArgument("no geometry named \"" + name + "\" in the scene");
+    CurrentContext current(*context_);
+    it->second.release();
+    scene_.erase(it);
+}
+
+void OffscreenRenderer::clear() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    CurrentContext current(*context_);
+    for (auto& entry : scene_) entry.second.release();
+    scene_.clear();
+}
+
+void OffscreenRenderer::set_render_option(const RenderOption& option) {
+    check_render_option(option);
+    std::lock_guard<std::mutex> lock(mutex_);
+    option_ = option;
+}
+
+RenderOption OffscreenRenderer::render_option() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return option_;
+}
+
+void OffscreenRenderer::setup_camera(const camera::PinholeCameraIntrinsic& k, const Eigen::Matrix4d& extrinsic) {
+    if (k.width != width_ || k.height != height_)
+        throw InvalidArgument("intrinsic is " + std::to_string(k.width) + " x " + std::to_string(k.height) +
+                              ", the renderer " + std::to_string(width_) + " x " + std::to_string(height_));
+    if (!std::isfinite(k.fx) || !std::isfinite(k.fy) || !std::isfinite(k.cx) || !std::isfinite(k.cy) ||
+        !(k.fx > 0) || !(k.fy > 0))
+        throw InvalidArgument("intrinsic needs finite values and fx, fy > 0");
+    check_rigid(extrinsic);
+    std::lock_guard<std::mutex> lock(mutex_);
+    camera_->kind = CameraSetting::Kind::Pinhole;
+    camera_->pinhole = {k, extrinsic};
+}
+
+void OffscreenRenderer::setup_camera_lookat(const Eigen::Vector3d& lookat, const Eigen::Vector3d& front,
+                                            const Eigen::Vector3d& up, double zoom) {
+    view_from_lookat(lookat, front, up, zoom, SceneBox(), width_, height_);  // validates
+    std::lock_guard<std::mutex> lock(mutex_);
+    camera_->kind = CameraSetting::Kind::Lookat;
+    camera_->a = lookat;
+    camera_->b = front;
+    camera_->up = up;
+    camera_->scalar = zoom;
+}
+
+void OffscreenRenderer::setup_camera_fov(double fov, const Eigen::Vector3d& center, const Eigen::Vector3d& eye,
+                                         const Eigen::Vector3d& up) {
+    view_from_eye(fov, center, eye, up, width_, height_);  // validates
+    std::lock_guard<std::mutex> lock(mutex_);
+    camera_->kind = CameraSetting::Kind::Fov;
+    camera_->a = center;
+    camera_->b = eye;
+    camera_->up = up;
+    camera_->scalar = fov;
+}
+
+camera::PinholeCameraParameters OffscreenRenderer::camera() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return resolve_camera();
+}
+
+SceneBox OffscreenRenderer::scene_box() const {
+    SceneBox box;
+    for (const auto& entry : scene_) box.add(entry.second.box);
+    return box;
+}
+
+camera::PinholeCameraParameters OffscreenRenderer::resolve_camera() const {
+    const CameraSetting& c = *camera_;
+    switch (c.kind) {
+        case CameraSetting::Kind::Pinhole: return c.pinhole;
+        case CameraSetting::Kind::Lookat: return view_from_lookat(c.a, c.b, c.up, c.scalar, scene_box(), width_, height_);
+        case CameraSetting::Kind::Fov: return view_from_eye(c.scalar, c.a, c.b, c.up, width_, height_);
+        case CameraSetting::Kind::Default: break;
+    }
+    const SceneBox box = scene_box();
+    return view_from_lookat(box.center(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), kDefaultZoom, box,
+                            width_, height_);
+}
+
+void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp) {
+    const ShaderProgram& p = program_;
+    const RenderOption& o = option_;
+    const Material& m = g.material;
+    const bool lit_material = o.light_on && m.shader == Shader::DefaultLit;
+    glUniformMatrix4fv(p.mvp, 1, GL_FALSE, mvp.data());
+    glUniform4f(p.base_color, float(m.base_color[0]), float(m.base_color[1]), float(m.base_color[2]),
+                float(m.base_color[3]));
+    glUniform1f(p.normal_line_length, 0.0f);
+    switch (g.kind) {
+        case GeometryKind::PointCloud: {
+            const double size = m.point_size > 0 ? m.point_size : o.point_size;
+            if (o.point_color == ColorOption::Normal)
+                set_uniform_color(p, g.has_normals ? ColorMode::Normal : ColorMode::Uniform);
+            else if (o.point_color == ColorOption::Default || o.point_color == ColorOption::Color)
+                set_uniform_color(p, g.has_colors ? ColorMode::Attribute : ColorMode::JetZ);
+            else
+                set_uniform_color(p, jet_mode(o.point_color));
+            glUniform1i(p.lit, lit_material && g.has_normals ? 1 : 0);  // Open3D lights clouds that have normals
+            glDisable(GL_CULL_FACE);
+            glPointSize(float(size));
+            glBindVertexArray(g.main.vao);
+            glDrawArrays(GL_POINTS, 0, g.main.count);
+            if (o.point_show_normal && g.normal_lines.vao) {
+                glUniform1i(p.lit, 0);
+                set_uniform_color(p, ColorMode::Uniform);
+                glUniform1f(p.normal_line_length, float(size * 0.01 * scene_box().max_extent()));
+                glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
+                glBindVertexArray(g.normal_lines.vao);
+                glDrawArrays(GL_LINES, 0, g.normal_lines.count);
+            }
+            break;
+        }
+        case GeometryKind::LineSet:
+            set_uniform_color(p, g.has_colors ? ColorMode::Attribute : ColorMode::Uniform);
+            glUniform1i(p.lit, 0);
+            glDisable(GL_CULL_FACE);
+            glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
+            glBindVertexArray(g.main.vao);
+            glDrawArrays(GL_LINES, 0, g.main.count);
+            break;
+        case GeometryKind::TriangleMesh:
+        case GeometryKind::VoxelGrid: {
+            const bool colored = g.has_colors && (o.mesh_color == ColorOption::Color ||
+                                                  (g.kind == GeometryKind::VoxelGrid && o.mesh_color == ColorOption::Default));
+            if (o.mesh_color == ColorOption::Normal) set_uniform_color(p, ColorMode::Normal);
+            else if (o.mesh_color == ColorOption::Default || o.mesh_color == ColorOption::Color)
+                set_uniform_color(p, colored ? ColorMode::Attribute : ColorMode::Uniform, o.default_mesh_color);
+            else set_uniform_color(p, jet_mode(o.mesh_color));
+            glUniform1i(p.lit, lit_material ? 1 : 0);
+            if (o.mesh_show_back_face) glDisable(GL_CULL_FACE);
+            else glEnable(GL_CULL_FACE);
+            const bool smooth = o.mesh_shade == MeshShade::Smooth && g.smooth.vao;
+            const VertexBuffer& buffer = smooth ? g.smooth : g.main;
+            auto draw_buffer = [&] {
+                glBindVertexArray(buffer.vao);
+                if (buffer.ebo) glDrawElements(GL_TRIANGLES, buffer.count, GL_UNSIGNED_INT, nullptr);
+                else glDrawArrays(GL_TRIANGLES, 0, buffer.count);
+            };
+            if (!o.mesh_show_wireframe) {
+                draw_buffer();
+                break;
+            }
+            // Faces pushed back a little so that the edges drawn over them win the depth test.
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(1.0f, 1.0f);
+            draw_buffer();
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glUniform1i(p.lit, 0);
+            set_uniform_color(p, ColorMode::Uniform);
+            glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            draw_buffer();
+            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+            break;
+        }
+    }
+    glBindVertexArray(0);
+}
+
+void OffscreenRenderer::draw(const camera::PinholeCameraParameters& cam, double z_near, double z_far) {
+    const RenderOption& o = option_;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, width_, height_);
+    glClearColor(float(o.background_color.x()), float(o.background_color.y()), float(o.background_color.z()), 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+
+    const Eigen::Matrix4f mvp = (gl_projection(cam.intrinsic, z_near, z_far) * gl_view(cam.extrinsic)).cast<float>();
+    const Eigen::Matrix3d r = cam.extrinsic.block<3, 3>(0, 0);
+    const Eigen::Vector3d eye = -r.transpose() * cam.extrinsic.block<3, 1>(0, 3);
+    const Eigen::Vector3d right = r.row(0).transpose(), up = -r.row(1).transpose(), front = -r.row(2).transpose();
+    const SceneBox box = scene_box();
+
+    const ShaderProgram& p = program_;
+    glUseProgram(p.id);
+    glUniform3f(p.eye, float(eye.x()), float(eye.y()), float(eye.z()));
+    glUniform3f(p.ambient, float(o.light_ambient_color.x()), float(o.light_ambient_color.y()),
+                float(o.light_ambient_color.z()));
+    glUniform3f(p.box_min, float(box.min_bound.x()), float(box.min_bound.y()), float(box.min_bound.z()));
+    glUniform3f(p.box_max, float(box.max_bound.x()), float(box.max_bound.y()), float(box.max_bound.z()));
+    float positions[12], colors[12], diffuse[4], specular[4], shininess[4];
+    for (int i = 0; i < 4; ++i) {
+        const Light& light = o.lights[i];
+        const Eigen::Vector3d at = box.center() + box.max_extent() * (light.position.x() * right +
+                                                                      light.position.y() * up +
+                                                                      light.position.z() * front);
+        for (int k = 0; k < 3; ++k) {
+            positions[3 * i + k] = float(at[k]);
+            colors[3 * i + k] = float(light.color[k]);
+        }
+        diffuse[i] = float(light.diffuse_power);
+        specular[i] = float(light.specular_power);
+        shininess[i] = float(light.specular_shininess);
+    }
+    glUniform3fv(p.light_position, 4, positions);
+    glUniform3fv(p.light_color, 4, colors);
+    glUniform1fv(p.light_diffuse, 4, diffuse);
+    glUniform1fv(p.light_specular, 4, specular);
+    glUniform1fv(p.light_shininess, 4, shininess);
+
+    for (const auto& entry : scene_) draw_geometry(entry.second, mvp);
+    glUseProgram(0);
+    glFinish();
+    check_gl("drawing the scene");
+}
+
+geometry::Image OffscreenRenderer::render_to_image() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    CurrentContext current(*context_);
+    const camera::PinholeCameraParameters cam = resolve_camera();
+    const auto [z_near, z_far] = near_far(cam.extrinsic, scene_box());
+    draw(cam, z_near, z_far);
+    geometry::Image image;
+    image.width = width_;
+    image.height = height_;
+    image.num_channels = 3;
+    image.bytes_per_channel = 1;
+    image.data.resize(image.byte_size());
+    std::vector<uint8_t> rows(image.byte_size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    check_gl("reading the colour buffer");
+    // OpenGL's first row is the bottom one; an image's is the top one.
+    const size_t line = image.bytes_per_line();
+    for (int v = 0; v < height_; ++v)
+        std::memcpy(image.data.data() + size_t(v) * line, rows.data() + size_t(height_ - 1 - v) * line, line);
+    return image;
+}
+
+geometry::Image OffscreenRenderer::render_to_depth_image(bool z_in_view_space) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    CurrentContext current(*context_);
+    const camera::PinholeCameraParameters cam = resolve_camera();
+    const auto [n, f] = near_far(cam.extrinsic, scene_box());
+    draw(cam, n, f);
+    std::vector<float> depth(size_t(width_) * size_t(height_));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    check_gl("reading the depth buffer");
+    geometry::Image image;
+    image.width = width_;
+    image.height = height_;
+    image.num_channels = 1;
+    image.bytes_per_channel = 4;
+    image.data.resize(image.byte_size());
+    for (int v = 0; v < height_; ++v) {
+        const float* src = depth.data() + size_t(height_ - 1 - v) * size_t(width_);
+        float* dst = image.pixel<float>(0, v);
+        for (int u = 0; u < width_; ++u) {
+            const double d = src[u];
+            if (!z_in_view_space) dst[u] = float(d);
+            else if (d >= 1.0) dst[u] = 0.0f;  // nothing drawn here
+            else dst[u] = float(2.0 * f * n / ((f + n) - (f - n) * (2.0 * d - 1.0)));
+        }
+    }
+    return image;
+}
+
+}  // namespace o3d::visualization

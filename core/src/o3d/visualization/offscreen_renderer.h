@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file offscreen_renderer.h
+/// @brief Renders a scene of named geometries into an offscreen framebuffer (Open3D's OffscreenRenderer,
+/// drawn in the style of its legacy Visualizer), and reads back colour and depth.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "o3d/camera/pinhole_camera.h"
+#include "o3d/geometry/image.h"
+#include "o3d/visualization/gl_context.h"
+#include "o3d/visualization/gpu_geometry.h"
+#include "o3d/visualization/render_option.h"
+#include "o3d/visualization/shader_program.h"
+#include "o3d/visualization/view_camera.h"
+
+namespace o3d::visualization {
+
+class OffscreenRenderer {
+public:
+    /// @brief Throws InvalidArgument (size), Unsupported (no context, or the shader does not build).
+    OffscreenRenderer(int width, int height, Backend backend);
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    Backend backend() const { return backend_; }
+
+    // Scene. Names are unique; add throws InvalidArgument for an empty or taken name.
+    template <typename Geometry>
+    void add(const std::string& name, const Geometry& geometry, const Material& material);
+    bool has(const std::string& name);
+    void remove(const std::string& name);  ///< throws InvalidArgument when absent
+    void clear();
+
+    void set_render_option(const RenderOption& option);  ///< checked
+    RenderOption render_option();
+
+    // Camera (see visualization.h for the three forms); each throws InvalidArgument on bad values.
+    void setup_camera(const camera::PinholeCameraIntrinsic& intrinsic, const Eigen::Matrix4d& extrinsic);
+    void setup_camera_lookat(const Eigen::Vector3d& lookat, const Eigen::Vector3d& front, const Eigen::Vector3d& up,
+                             double zoom);
+    void setup_camera_fov(double vertical_fov_deg, const Eigen::Vector3d& center, const Eigen::Vector3d& eye,
+                          const Eigen::Vector3d& up);
+    /// @brief The pinhole parameters the next render uses.
+    camera::PinholeCameraParameters camera();
+
+    geometry::Image render_to_image();                       ///< RGB, 1 byte per channel
+    geometry::Image render_to_depth_image(bool z_in_view_space);  ///< float32
+
+private:
+    struct CameraSetting;
+    void add_uploaded(const std::string& name, GpuGeometry&& geometry);
+    SceneBox scene_box() const;
+    camera::PinholeCameraParameters resolve_camera() const;
+    void draw(const camera::PinholeCameraParameters& camera, double z_near, double z_far);
+    void draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp);
+
+    int width_, height_;
+    Backend backend_;
+    std::mutex mutex_;  // one call at a time: the context is bound for the duration of each
+    std::unique_ptr<GLContext> context_;
+    ShaderProgram program_;
+    GLuint framebuffer_ = 0, color_buffer_ = 0, depth_buffer_ = 0;
+    std::map<std::string, GpuGeometry> scene_;
+    RenderOption option_;
+    std::unique_ptr<CameraSetting> camera_;
+};
+
+}  // namespace o3d::visualization

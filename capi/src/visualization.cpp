@@ -309,7 +309,7 @@ O3D_API o3d_status o3d_offscreen_renderer_render_to_depth_image(o3d_image_t** ou
     });
 }
 
-O3D_API o3d_status o3d_offscreen_renderer_render_to_png(const char* path, o3d_offscreen_renderer_t* renderer) {
+O3D_API o3d_status o3d_offscreen_renderer_render_to_png(o3d_offscreen_renderer_t* renderer, const char* path) {
     return guard(__func__, [&] {
         require(path, "path");
         o3d::io::write_image(path, renderer_of(renderer).render_to_image(), "png");

@@ -315,7 +315,7 @@ static void test_lineset_voxelgrid_and_png(void** state) {
 
     char path[256];
     snprintf(path, sizeof path, "/tmp/o3d_capi_vis_%d.png", (int)getpid());
-    assert_int_equal(o3d_offscreen_renderer_render_to_png(path, r), O3D_OK);
+    assert_int_equal(o3d_offscreen_renderer_render_to_png(r, path), O3D_OK);
     o3d_image_t* read = NULL;
     assert_int_equal(o3d_io_read_image(&read, path, NULL), O3D_OK);
     int32_t w = 0;
@@ -421,7 +421,7 @@ static void test_errors(void** state) {
     O3D_ASSERT_FAILS(o3d_offscreen_renderer_render_to_image(NULL, r), O3D_ERROR_INVALID_ARGUMENT);
     o3d_image_t* image = NULL;
     O3D_ASSERT_FAILS(o3d_offscreen_renderer_render_to_image(&image, NULL), O3D_ERROR_INVALID_ARGUMENT);
-    O3D_ASSERT_FAILS(o3d_offscreen_renderer_render_to_png("/nonexistent/dir/x.png", r), O3D_ERROR_IO);
+    O3D_ASSERT_FAILS(o3d_offscreen_renderer_render_to_png(r, "/nonexistent/dir/x.png"), O3D_ERROR_IO);
     o3d_offscreen_renderer_destroy(NULL);
     o3d_trianglemesh_destroy(cube);
     o3d_offscreen_renderer_destroy(r);

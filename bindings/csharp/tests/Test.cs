@@ -296,6 +296,7 @@ static partial class Test
         PortedTests(); // Ported.cs
         RegistrationPipelineTests(); // RegistrationPipelineTest.cs
         CameraRgbdTests(); // CameraRgbdTest.cs
+        VisualizationTests(); // VisualizationTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

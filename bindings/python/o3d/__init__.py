@@ -1,7 +1,8 @@
 """o3d: 3D data processing with Open3D's Python vocabulary (``import o3d`` for ``import open3d as o3d``).
 
 Submodules: :mod:`o3d.geometry`, :mod:`o3d.io`, :mod:`o3d.pipelines.registration`, :mod:`o3d.utility`,
-:mod:`o3d.camera`, and placeholders :mod:`o3d.visualization`, :mod:`o3d.pipelines.odometry`,
+:mod:`o3d.camera`, :mod:`o3d.visualization` (RenderOption and the offscreen renderer,
+:mod:`o3d.visualization.rendering`), and placeholders :mod:`o3d.pipelines.odometry`,
 :mod:`o3d.pipelines.integration`.
 
 Errors: every failure raises a subclass of :class:`o3d.O3DError` (itself a ``RuntimeError``) whose

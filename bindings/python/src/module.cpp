@@ -4,6 +4,12 @@
 // pure-Python package (bindings/python/o3d) sorts the names into Open3D's submodules.
 #include "geometry_types.h"
 
+namespace o3dpy {
+// visualization.cpp: RenderOption and the offscreen renderer (o3d.visualization, .rendering).
+void declare_visualization(py::module_& m);
+void define_visualization(py::module_& m);
+}  // namespace o3dpy
+
 PYBIND11_MODULE(_o3d, m) {
     m.doc() = "o3d native extension (pybind11 over the o3d C API). Import o3d, not this module.";
     namespace o = o3dpy;
@@ -21,6 +27,7 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_lineset(m);
     o::declare_voxelgrid(m);
     o::declare_octree(m);
+    o::declare_visualization(m);
 
     o::define_utility(m);
     o::define_pointcloud(m);
@@ -39,4 +46,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_lineset(m);
     o::define_voxelgrid(m);
     o::define_octree(m);
+    o::define_visualization(m);
 }

@@ -366,15 +366,16 @@ O3D_API o3d_status o3d_offscreen_renderer_render_to_depth_image(o3d_image_t** ou
                                                                 o3d_offscreen_renderer_t* renderer,
                                                                 int32_t z_in_view_space);
 /**
- * @brief Render the scene and write it as a PNG file in one call.
+ * @brief Render the scene and write it as a PNG file in one call. (The renderer comes first, as the
+ * subject of a method, before the file it writes.)
  *
  * Threads: any thread, one call per renderer at a time (serialized).
- * @param path the PNG file to write
  * @param renderer the renderer
+ * @param path the PNG file to write
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer; O3D_ERROR_IO when the file cannot be
  *   written; O3D_ERROR_INTERNAL when OpenGL reports an error.
  */
-O3D_API o3d_status o3d_offscreen_renderer_render_to_png(const char* path, o3d_offscreen_renderer_t* renderer);
+O3D_API o3d_status o3d_offscreen_renderer_render_to_png(o3d_offscreen_renderer_t* renderer, const char* path);
 
 O3D_END_DECL
 

@@ -23,4 +23,5 @@
 #include "o3dpp/rgbd.hpp"
 #include "o3dpp/span.hpp"
 #include "o3dpp/trianglemesh.hpp"
+#include "o3dpp/visualization.hpp"
 #include "o3dpp/voxelgrid.hpp"

@@ -8,7 +8,8 @@
 //! [`Feature`] and [`registration::compute_fpfh_feature`], global registration
 //! ([`registration::registration_ransac_based_on_feature_matching`],
 //! [`registration::registration_fgr_based_on_feature_matching`]), [`PoseGraph`] and
-//! [`registration::global_optimization`].
+//! [`registration::global_optimization`], and rendering without a display: [`OffscreenRenderer`]
+//! (`o3d.visualization.rendering.OffscreenRenderer`) with [`RenderOption`] and [`RenderMaterial`].
 //!
 //! * Every fallible call returns [`Result<T, Error>`](Error); the error carries the library's message.
 //! * Handles are owned (`Drop` destroys them); views such as [`PointCloud::points`] are zero-copy
@@ -58,6 +59,7 @@ mod trianglemesh;
 mod trianglemesh_ops;
 mod trianglemesh_primitives;
 mod util;
+pub mod visualization;
 mod voxelgrid;
 
 pub use boundingbox::OrientedBoundingBox;
@@ -74,6 +76,9 @@ pub use registration_global::random_seed;
 pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
 pub use trianglemesh::{MeshArray, TriangleMesh};
 pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
+pub use visualization::{
+    ColorOption, Drawable, MeshShadeOption, OffscreenRenderer, RenderBackend, RenderMaterial, RenderOption, Shader,
+};
 pub use voxelgrid::{Voxel, VoxelGrid};
 
 use error::check;

@@ -1,1 +1,0 @@
-"""o3d.visualization: placeholder (no viewer yet)."""

@@ -1,0 +1,408 @@
+//! Rendering without a display (o3d.visualization): [`RenderOption`], [`RenderMaterial`] and
+//! [`OffscreenRenderer`] (rendering.OffscreenRenderer with its scene's add/remove/has/clear_geometry).
+//! The camera and lighting model are the C header's (`o3d/visualization.h`).
+//!
+//! ```no_run
+//! use o3d::visualization::{OffscreenRenderer, RenderBackend};
+//! use o3d::TriangleMesh;
+//! let mut renderer = OffscreenRenderer::new(640, 480, RenderBackend::Auto)?;
+//! renderer.add_geometry("box", &TriangleMesh::create_box(1.0, 1.0, 1.0)?, &Default::default())?;
+//! renderer.render_to_png("box.png")?;
+//! # Ok::<(), o3d::Error>(())
+//! ```
+use std::ffi::c_char;
+use std::fmt;
+use std::path::Path;
+
+use o3d_sys as sys;
+
+use crate::camera::{PinholeCameraParameters, PinholeIntrinsic};
+use crate::error::{check, Result};
+use crate::image::{new_image, Image};
+use crate::io::{c_path, c_string};
+use crate::lineset::LineSet;
+use crate::pointcloud::PointCloud;
+use crate::trianglemesh::TriangleMesh;
+use crate::util::{c_enum, handle, mat4_ptr, options, CField};
+use crate::voxelgrid::VoxelGrid;
+
+c_enum! {
+    /// Where the renderer's OpenGL context comes from (`O3D_RENDER_BACKEND_*`).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+    pub enum RenderBackend("render backend") {
+        /// EGL when it works, else a hidden GLFW window.
+        #[default]
+        Auto = sys::O3D_RENDER_BACKEND_AUTO,
+        /// Headless EGL only (Mesa's surfaceless platform where there is no GPU).
+        Egl = sys::O3D_RENDER_BACKEND_EGL,
+        /// A hidden GLFW window only (needs a display; create and use the renderer on the main thread).
+        Glfw = sys::O3D_RENDER_BACKEND_GLFW,
+    }
+}
+
+c_enum! {
+    /// RenderOption.mesh_shade_option (`O3D_MESH_SHADE_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum MeshShadeOption("mesh shade option") {
+        /// One normal per triangle.
+        Flat = sys::O3D_MESH_SHADE_FLAT,
+        /// The vertex normals (flat where the mesh has none).
+        Smooth = sys::O3D_MESH_SHADE_SMOOTH,
+    }
+}
+
+c_enum! {
+    /// RenderOption.point_color_option and mesh_color_option (`O3D_COLOR_OPTION_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum ColorOption("color option") {
+        /// Points: their colors, else a Jet map of z; meshes: `default_mesh_color`.
+        Default = sys::O3D_COLOR_OPTION_DEFAULT,
+        /// Their colors, else as `Default`.
+        Color = sys::O3D_COLOR_OPTION_COLOR,
+        /// Jet color map of x over the scene's box.
+        XCoordinate = sys::O3D_COLOR_OPTION_X,
+        /// Jet color map of y over the scene's box.
+        YCoordinate = sys::O3D_COLOR_OPTION_Y,
+        /// Jet color map of z over the scene's box.
+        ZCoordinate = sys::O3D_COLOR_OPTION_Z,
+        /// normal * 0.5 + 0.5 (black without normals).
+        Normal = sys::O3D_COLOR_OPTION_NORMAL,
+    }
+}
+
+c_enum! {
+    /// A material's shader (`O3D_SHADER_*`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+    pub enum Shader("shader") {
+        /// "defaultLit": the RenderOption's lights (when `light_on`).
+        DefaultLit = sys::O3D_SHADER_DEFAULT_LIT,
+        /// "defaultUnlit": colors as they are.
+        DefaultUnlit = sys::O3D_SHADER_DEFAULT_UNLIT,
+    }
+}
+
+// The option structs hold fixed-size arrays: a C `double[N]` is a Rust `[f64; N]`, and the four lights'
+// positions and colors (`double[12]`) are four rows of three.
+impl<const N: usize> CField<[f64; N]> for [f64; N] {
+    fn to_c(&self, _: &str) -> Result<[f64; N]> {
+        Ok(*self)
+    }
+    fn from_c(c: [f64; N]) -> Result<Self> {
+        Ok(c)
+    }
+}
+
+impl CField<[f64; 12]> for [[f64; 3]; 4] {
+    fn to_c(&self, _: &str) -> Result<[f64; 12]> {
+        let mut out = [0.0; 12];
+        for (chunk, row) in out.chunks_exact_mut(3).zip(self) {
+            chunk.copy_from_slice(row);
+        }
+        Ok(out)
+    }
+    fn from_c(c: [f64; 12]) -> Result<Self> {
+        let mut rows = [[0.0; 3]; 4];
+        for (row, chunk) in rows.iter_mut().zip(c.chunks_exact(3)) {
+            row.copy_from_slice(chunk);
+        }
+        Ok(rows)
+    }
+}
+
+options! {
+    /// o3d.visualization.RenderOption; `Default` is the library's (`o3d_render_option_init`, Open3D's:
+    /// white background, point size 5, lights on). Light `i` sits at
+    /// `center + extent * (p[0] * right + p[1] * up + p[2] * front)` of the scene's box, in the camera's
+    /// frame, with `p = light_position[i]`.
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct RenderOption(sys::o3d_render_option_t, sys::o3d_render_option_init) {
+        /// RGB in `[0, 1]` (default white).
+        pub background_color: [f64; 3] = background_color,
+        /// Pixels, in `[1, 25]` (default 5).
+        pub point_size: f64 = point_size,
+        /// Pixels, in `[1, 10]` (default 1).
+        pub line_width: f64 = line_width,
+        /// Lit shading (default true).
+        pub light_on: bool = light_on,
+        /// Draw each point's normal as a line (default false).
+        pub point_show_normal: bool = point_show_normal,
+        /// Draw triangle edges over the faces (default false).
+        pub mesh_show_wireframe: bool = mesh_show_wireframe,
+        /// Draw triangles seen from behind (default false: culled).
+        pub mesh_show_back_face: bool = mesh_show_back_face,
+        /// Default `Flat`.
+        pub mesh_shade_option: MeshShadeOption = mesh_shade_option,
+        /// Default `Default`.
+        pub point_color_option: ColorOption = point_color_option,
+        /// Default `Color`.
+        pub mesh_color_option: ColorOption = mesh_color_option,
+        /// Default 0.7 gray.
+        pub default_mesh_color: [f64; 3] = default_mesh_color,
+        /// Default black.
+        pub light_ambient_color: [f64; 3] = light_ambient_color,
+        /// Four lights, relative to the scene's box (default (0,0,2) twice, (0,0,-2) twice).
+        pub light_position: [[f64; 3]; 4] = light_position,
+        /// Four RGB colors (default white).
+        pub light_color: [[f64; 3]; 4] = light_color,
+        /// Default 0.66 each.
+        pub light_diffuse_power: [f64; 4] = light_diffuse_power,
+        /// Default 0.2 each.
+        pub light_specular_power: [f64; 4] = light_specular_power,
+        /// Default 100 each.
+        pub light_specular_shininess: [f64; 4] = light_specular_shininess,
+    }
+}
+
+impl RenderOption {
+    /// RenderOption.load_from_json: the fields present in an Open3D RenderOption JSON file replace
+    /// these; on error `self` is unchanged.
+    pub fn load_from_json(&mut self, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_path(path.as_ref())?;
+        let mut raw = self.to_raw()?;
+        // SAFETY: a struct filled by its init and a NUL-terminated path.
+        check(unsafe { sys::o3d_render_option_load_json(&mut raw, path.as_ptr()) })?;
+        *self = RenderOption::from_raw(&raw)?;
+        Ok(())
+    }
+
+    /// RenderOption.save_to_json, in Open3D's layout.
+    pub fn save_to_json(&self, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_path(path.as_ref())?;
+        let raw = self.to_raw()?;
+        // SAFETY: a NUL-terminated path and a struct filled by its init.
+        check(unsafe { sys::o3d_render_option_save_json(path.as_ptr(), &raw) })
+    }
+}
+
+options! {
+    /// How one geometry is drawn (a subset of rendering.MaterialRecord); `Default` is the library's
+    /// (`o3d_render_material_init`: lit, white tint, the RenderOption's sizes).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct RenderMaterial(sys::o3d_render_material_t, sys::o3d_render_material_init) {
+        /// Default `DefaultLit`.
+        pub shader: Shader = shader,
+        /// Multiplies the geometry's colors (RGBA; alpha unused); default white.
+        pub base_color: [f64; 4] = base_color,
+        /// Pixels; 0 (default) = the RenderOption's.
+        pub point_size: f64 = point_size,
+        /// Pixels; 0 (default) = the RenderOption's.
+        pub line_width: f64 = line_width,
+    }
+}
+
+impl RenderMaterial {
+    /// The defaults with `shader`, e.g. `RenderMaterial::with_shader(Shader::DefaultUnlit)`.
+    pub fn with_shader(shader: Shader) -> RenderMaterial {
+        RenderMaterial { shader, ..Default::default() }
+    }
+}
+
+mod sealed {
+    pub trait Sealed {}
+}
+
+/// A geometry an [`OffscreenRenderer`] draws: [`PointCloud`], [`TriangleMesh`], [`LineSet`] or
+/// [`VoxelGrid`] (sealed: each maps to its `o3d_offscreen_renderer_add_*`).
+pub trait Drawable: sealed::Sealed {
+    /// Call the C function adding a copy of `self`.
+    ///
+    /// # Safety
+    /// `renderer` must be a valid renderer, `name` a NUL-terminated string and `material` a valid struct.
+    #[doc(hidden)]
+    unsafe fn add_to(
+        &self,
+        renderer: *mut sys::o3d_offscreen_renderer_t,
+        name: *const c_char,
+        material: *const sys::o3d_render_material_t,
+    ) -> sys::o3d_status;
+}
+
+macro_rules! drawable {
+    ($($ty:ty => $add:path,)+) => {$(
+        impl sealed::Sealed for $ty {}
+        impl Drawable for $ty {
+            unsafe fn add_to(
+                &self,
+                renderer: *mut sys::o3d_offscreen_renderer_t,
+                name: *const c_char,
+                material: *const sys::o3d_render_material_t,
+            ) -> sys::o3d_status {
+                // SAFETY: the caller's contract, and a valid geometry handle.
+                unsafe { $add(renderer, name, self.as_raw(), material) }
+            }
+        }
+    )+};
+}
+drawable! {
+    PointCloud => sys::o3d_offscreen_renderer_add_pointcloud,
+    TriangleMesh => sys::o3d_offscreen_renderer_add_trianglemesh,
+    LineSet => sys::o3d_offscreen_renderer_add_lineset,
+    VoxelGrid => sys::o3d_offscreen_renderer_add_voxelgrid,
+}
+
+handle! {
+    /// rendering.OffscreenRenderer: draws copies of geometries into a `width` x `height` image without a
+    /// display. Owns an `o3d_offscreen_renderer_t`. The library serializes calls on one renderer; its
+    /// queries take `&mut self` as their C functions take a non-`const` handle. With the GLFW backend,
+    /// create and use it on the main thread.
+    OffscreenRenderer(sys::o3d_offscreen_renderer_t, "offscreen renderer"), new_renderer, sys::o3d_offscreen_renderer_destroy
+}
+
+impl OffscreenRenderer {
+    /// A renderer of `width` x `height` pixels; `ErrorCode::Unsupported` when no OpenGL 3.3 context can
+    /// be made (the message says what each backend answered).
+    pub fn new(width: i32, height: i32, backend: RenderBackend) -> Result<OffscreenRenderer> {
+        // SAFETY: out-pointer and plain values.
+        new_renderer(|out| unsafe { sys::o3d_offscreen_renderer_create(out, width, height, backend.raw()) })
+    }
+
+    /// The backend it runs on (`Egl` or `Glfw`, never `Auto`).
+    pub fn backend(&self) -> Result<RenderBackend> {
+        let mut out = 0;
+        // SAFETY: valid handle and out-pointer.
+        check(unsafe { sys::o3d_offscreen_renderer_get_backend(&mut out, self.as_raw()) })?;
+        RenderBackend::from_raw(out)
+    }
+
+    /// (width, height) in pixels.
+    pub fn size(&self) -> Result<(i32, i32)> {
+        let (mut w, mut h) = (0, 0);
+        // SAFETY: valid handle and out-pointers.
+        check(unsafe { sys::o3d_offscreen_renderer_get_size(&mut w, &mut h, self.as_raw()) })?;
+        Ok((w, h))
+    }
+
+    /// scene.add_geometry: add a copy of `geometry` under `name` (non-empty, not yet in the scene).
+    pub fn add_geometry(&mut self, name: &str, geometry: &impl Drawable, material: &RenderMaterial) -> Result<()> {
+        let name = c_string("name", name)?;
+        let material = material.to_raw()?;
+        // SAFETY: valid handles, a NUL-terminated name and a struct filled by its init.
+        check(unsafe { geometry.add_to(self.raw_mut(), name.as_ptr(), &material) })
+    }
+
+    /// scene.has_geometry.
+    pub fn has_geometry(&mut self, name: &str) -> Result<bool> {
+        let name = c_string("name", name)?;
+        let mut out = 0;
+        // SAFETY: valid handle, out-pointer and NUL-terminated name.
+        check(unsafe { sys::o3d_offscreen_renderer_has_geometry(&mut out, self.raw_mut(), name.as_ptr()) })?;
+        Ok(out != 0)
+    }
+
+    /// scene.remove_geometry (`InvalidArgument` when `name` is not in the scene).
+    pub fn remove_geometry(&mut self, name: &str) -> Result<()> {
+        let name = c_string("name", name)?;
+        // SAFETY: valid handle and NUL-terminated name.
+        check(unsafe { sys::o3d_offscreen_renderer_remove_geometry(self.raw_mut(), name.as_ptr()) })
+    }
+
+    /// scene.clear_geometry: remove every geometry.
+    pub fn clear_geometry(&mut self) -> Result<()> {
+        // SAFETY: valid handle.
+        check(unsafe { sys::o3d_offscreen_renderer_clear_geometries(self.raw_mut()) })
+    }
+
+    /// Replace the render option (`InvalidArgument` for a value out of range).
+    pub fn set_render_option(&mut self, option: &RenderOption) -> Result<()> {
+        let raw = option.to_raw()?;
+        // SAFETY: valid handle and a struct filled by its init.
+        check(unsafe { sys::o3d_offscreen_renderer_set_render_option(self.raw_mut(), &raw) })
+    }
+
+    /// The current render option.
+    pub fn render_option(&mut self) -> Result<RenderOption> {
+        let mut raw = RenderOption::raw_default()?;
+        // SAFETY: valid handle and a struct whose struct_size its init set.
+        check(unsafe { sys::o3d_offscreen_renderer_get_render_option(&mut raw, self.raw_mut()) })?;
+        RenderOption::from_raw(&raw)
+    }
+
+    /// setup_camera(intrinsic, extrinsic): a pinhole camera of the renderer's size and a row-major
+    /// world-to-camera rigid transform (the camera looks along +z, y down).
+    pub fn setup_camera(&mut self, intrinsic: &PinholeIntrinsic, extrinsic: &[[f64; 4]; 4]) -> Result<()> {
+        let k = intrinsic.to_raw();
+        // SAFETY: valid handle, struct and 16 contiguous doubles.
+        check(unsafe { sys::o3d_offscreen_renderer_setup_camera(self.raw_mut(), &k, mat4_ptr(extrinsic)) })
+    }
+
+    /// setup_camera(vertical_field_of_view, center, eye, up): a perspective camera at `eye` looking at
+    /// `center`.
+    pub fn setup_camera_fov(
+        &mut self,
+        vertical_fov_deg: f64,
+        center: [f64; 3],
+        eye: [f64; 3],
+        up: [f64; 3],
+    ) -> Result<()> {
+        // SAFETY: valid handle and three arrays of 3 doubles.
+        check(unsafe {
+            sys::o3d_offscreen_renderer_setup_camera_fov(
+                self.raw_mut(),
+                vertical_fov_deg,
+                center.as_ptr(),
+                eye.as_ptr(),
+                up.as_ptr(),
+            )
+        })
+    }
+
+    /// Open3D's ViewControl view (draw_geometries' lookat/front/up/zoom, zoom in `[0.02, 2]`), resolved
+    /// at each render against the scene's bounding box.
+    pub fn setup_camera_lookat(&mut self, lookat: [f64; 3], front: [f64; 3], up: [f64; 3], zoom: f64) -> Result<()> {
+        // SAFETY: valid handle and three arrays of 3 doubles.
+        check(unsafe {
+            sys::o3d_offscreen_renderer_setup_camera_lookat(
+                self.raw_mut(),
+                lookat.as_ptr(),
+                front.as_ptr(),
+                up.as_ptr(),
+                zoom,
+            )
+        })
+    }
+
+    /// The camera the next render uses, as pinhole parameters: [`Self::setup_camera`] with them
+    /// reproduces the image.
+    pub fn camera(&mut self) -> Result<PinholeCameraParameters> {
+        let mut k = sys::o3d_pinhole_intrinsic_t::default();
+        let mut extrinsic = [[0.0f64; 4]; 4];
+        // SAFETY: valid handle, writable struct and 16 contiguous doubles.
+        check(unsafe {
+            sys::o3d_offscreen_renderer_get_camera(&mut k, extrinsic.as_mut_ptr().cast(), self.raw_mut())
+        })?;
+        Ok(PinholeCameraParameters { intrinsic: PinholeIntrinsic::from_raw(k), extrinsic })
+    }
+
+    /// render_to_image: RGB, one `u8` a channel.
+    pub fn render_to_image(&mut self) -> Result<Image> {
+        let raw = self.raw_mut();
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe { sys::o3d_offscreen_renderer_render_to_image(out, raw) })
+    }
+
+    /// render_to_depth_image: one `f32` channel. `z_in_view_space`: the distance along the camera's
+    /// axis (0 where nothing was drawn); else the depth buffer in `[0, 1]` (1 where nothing was drawn).
+    pub fn render_to_depth_image(&mut self, z_in_view_space: bool) -> Result<Image> {
+        let raw = self.raw_mut();
+        // SAFETY: valid handle and out-pointer.
+        new_image(|out| unsafe {
+            sys::o3d_offscreen_renderer_render_to_depth_image(out, raw, i32::from(z_in_view_space))
+        })
+    }
+
+    /// Render and write a PNG file.
+    pub fn render_to_png(&mut self, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_path(path.as_ref())?;
+        // SAFETY: NUL-terminated path and valid handle.
+        check(unsafe { sys::o3d_offscreen_renderer_render_to_png(self.raw_mut(), path.as_ptr()) })
+    }
+}
+
+impl fmt::Debug for OffscreenRenderer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("OffscreenRenderer")
+            .field("size", &self.size().unwrap_or((0, 0)))
+            .field("backend", &self.backend().ok())
+            .finish()
+    }
+}

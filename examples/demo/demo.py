@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""The paper's Figure 1 task on a synthesized scan, then ICP, global registration and a mesh pass, printing what it does.
+"""The paper's Figure 1 task on a synthesized scan, then ICP, global registration and a mesh pass, printing what it does
+and writing pictures of it (PNG, rendered by o3d without a display).
 
-Written exactly as it would be for Open3D (`import open3d as o3d`); only the import differs.
+Written exactly as it would be for Open3D (`import open3d as o3d`); only the import differs, and the pictures use
+two o3d extras of OffscreenRenderer (`render_option`, for normals and wireframe, and `render_to_png`).
 No data files are needed: the scan is a noisy sampled room corner with a sphere in it.
 """
 import os
@@ -26,6 +28,22 @@ def synthesize_scan(n=200_000, seed=7):
     parts.append(d / np.linalg.norm(d, axis=1, keepdims=True) * 0.5 + [2.0, 2.0, 0.5])
     xyz = np.vstack(parts) + rng.normal(scale=0.002, size=(n, 3))
     return xyz
+
+
+def render_png(path, geometries, eye, center, point_show_normal=False, mesh_show_wireframe=False):
+    """Draws [(name, geometry, point_size)] seen from `eye` (z up) into a 800 x 600 PNG."""
+    rendering = o3d.visualization.rendering
+    renderer = rendering.OffscreenRenderer(800, 600)
+    renderer.render_option.point_show_normal = point_show_normal
+    renderer.render_option.mesh_show_wireframe = mesh_show_wireframe
+    renderer.render_option.mesh_show_back_face = True
+    for name, geometry, point_size in geometries:
+        material = rendering.MaterialRecord()
+        material.point_size = point_size
+        renderer.scene.add_geometry(name, geometry, material)
+    renderer.setup_camera(60.0, center, eye, [0, 0, 1])
+    renderer.render_to_png(path)
+    return path
 
 
 def step(message, fn):
@@ -56,6 +74,10 @@ def main():
     print(f"    floor normals |n.z| mean = {np.abs(normals[floor, 2]).mean():.4f} (1 = exactly vertical)")
     out_path = os.path.join(out_dir, "downsampled_with_normals.pcd")
     step(f"write_point_cloud({out_path})", lambda: o3d.io.write_point_cloud(out_path, downpcd))
+    pictures = []
+    pictures.append(step("rendered it, colored by height, with its normals",
+                         lambda: render_png(os.path.join(out_dir, "figure1_normals.png"), [("scan", downpcd, 3)],
+                                            eye=[6.2, 5.0, 3.6], center=[1.7, 1.7, 0.7], point_show_normal=True)))
 
     # Pairwise ICP: register a moved copy back onto the original.
     angle = np.deg2rad(5.0)
@@ -93,6 +115,19 @@ def main():
                                 reg.TransformationEstimationPointToPlane())
     err = np.abs(fine.transformation @ far - np.identity(4)).max()
     print(f"    RANSAC fitness {coarse.fitness:.4f}; after ICP max |T * T_turned - I| = {err:.2e}")
+    # Open3D's tutorial colors: the source yellow, the target blue.
+    source_colored = o3d.geometry.PointCloud(turned)
+    source_colored.paint_uniform_color([1, 0.706, 0])
+    target_colored = o3d.geometry.PointCloud(downpcd)
+    target_colored.paint_uniform_color([0, 0.651, 0.929])
+    view = dict(eye=[8.5, 7.5, 6.5], center=[1.2, 2.0, 0.6])
+    pictures.append(step("rendered the pair before registration",
+                         lambda: render_png(os.path.join(out_dir, "registration_before.png"),
+                                            [("source", source_colored, 2), ("target", target_colored, 4)], **view)))
+    source_colored.transform(fine.transformation)
+    pictures.append(step("and after",
+                         lambda: render_png(os.path.join(out_dir, "registration_after.png"),
+                                            [("source", source_colored, 2), ("target", target_colored, 4)], **view)))
 
     # Meshes: a primitive, decimated, checked, sampled, and its convex hull.
     sphere = o3d.geometry.TriangleMesh.create_sphere(radius=1.0, resolution=100)
@@ -105,6 +140,20 @@ def main():
     print(f"    hull: {len(hull.vertices)} vertices, {len(hull.triangles)} triangles, volume {hull.get_volume():.4f}")
     mesh_path = os.path.join(out_dir, "sphere_simplified.ply")
     step(f"write_triangle_mesh({mesh_path})", lambda: o3d.io.write_triangle_mesh(mesh_path, simple))
+    simple.compute_vertex_normals()
+    simple.paint_uniform_color([0.85, 0.55, 0.35])
+    hull_lines = o3d.geometry.LineSet.create_from_triangle_mesh(hull)
+    beside = np.identity(4)
+    beside[0, 3] = 2.4
+    hull_lines.transform(beside)
+    samples.transform(beside)
+    pictures.append(step("rendered the decimated sphere (wireframe) beside the samples and their hull",
+                         lambda: render_png(os.path.join(out_dir, "mesh.png"),
+                                            [("sphere", simple, 3), ("samples", samples, 4), ("hull", hull_lines, 1)],
+                                            eye=[1.2, -5.5, 2.5], center=[1.2, 0, 0], mesh_show_wireframe=True)))
+    print("pictures:")
+    for path in pictures:
+        print(f"  {path}")
     print(f"done: outputs in {out_dir}")
 
 

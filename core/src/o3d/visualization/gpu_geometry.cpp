@@ -54,6 +54,18 @@ void check_count(size_t n, const char* what) {
     if (n > size_t(1) << 30) throw InvalidArgument(std::string(what) + ": too many to draw (over 2^30)");
 }
 
+/// @brief Throws InvalidArgument naming the first item (triangle, line) with an index outside [0, count).
+template <int N>
+void check_indices(const std::vector<Eigen::Matrix<int, N, 1>>& items, size_t count, const char* item,
+                   const char* targets) {
+    for (size_t i = 0; i < items.size(); ++i)
+        for (int k = 0; k < N; ++k)
+            if (items[i][k] < 0 || size_t(items[i][k]) >= count)
+                throw InvalidArgument(std::string(item) + " " + std::to_string(i) + " has index " +
+                                      std::to_string(items[i][k]) + ", out of range for " + std::to_string(count) +
+                                      " " + targets);
+}
+
 Eigen::Vector3d face_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
     const Eigen::Vector3d n = (b - a).cross(c - a);
     const double len = n.norm();
@@ -112,12 +124,7 @@ GpuGeometry upload(const geometry::PointCloud& cloud, const Material& material) 
 
 GpuGeometry upload(const geometry::TriangleMesh& mesh, const Material& material) {
     const size_t nv = mesh.vertices.size();
-    for (size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k)
-            if (mesh.triangles[t][k] < 0 || size_t(mesh.triangles[t][k]) >= nv)
-                throw InvalidArgument("triangle " + std::to_string(t) + " has vertex index " +
-                                      std::to_string(mesh.triangles[t][k]) + ", out of range for " +
-                                      std::to_string(nv) + " vertices");
+    check_indices(mesh.triangles, nv, "triangle", "vertices");
     check_count(3 * mesh.triangles.size(), "triangles");
     GpuGeometry g;
     g.kind = GeometryKind::TriangleMesh;
@@ -155,13 +162,7 @@ GpuGeometry upload(const geometry::TriangleMesh& mesh, const Material& material)
 }
 
 GpuGeometry upload(const geometry::LineSet& lines, const Material& material) {
-    const size_t np = lines.points.size();
-    for (size_t l = 0; l < lines.lines.size(); ++l)
-        for (int k = 0; k < 2; ++k)
-            if (lines.lines[l][k] < 0 || size_t(lines.lines[l][k]) >= np)
-                throw InvalidArgument("line " + std::to_string(l) + " has point index " +
-                                      std::to_string(lines.lines[l][k]) + ", out of range for " +
-                                      std::to_string(np) + " points");
+    check_indices(lines.lines, lines.points.size(), "line", "points");
     check_count(2 * lines.lines.size(), "lines");
     GpuGeometry g;
     g.kind = GeometryKind::LineSet;

@@ -3,7 +3,8 @@
 
 Rendering needs no display: the renderer's OpenGL context comes from EGL (Mesa's surfaceless platform,
 software rendering where there is no GPU), else from a hidden GLFW window. There is no on-screen viewer
-(no draw_geometries / Visualizer yet): render to an image or a PNG file instead.
+yet (no Visualizer): render to an image or a PNG file instead. ``draw_geometries`` works in a Jupyter
+notebook, where it shows the offscreen render inline; elsewhere it raises UnsupportedError.
 """
 from .._o3d import (  # noqa: F401
     MeshColorOption,
@@ -12,5 +13,7 @@ from .._o3d import (  # noqa: F401
     RenderOption,
 )
 from . import rendering  # noqa: E402,F401
+from ._draw import draw_geometries, render_geometries_png  # noqa: E402,F401
 
-__all__ = ["RenderOption", "MeshShadeOption", "PointColorOption", "MeshColorOption", "rendering"]
+__all__ = ["RenderOption", "MeshShadeOption", "PointColorOption", "MeshColorOption", "rendering",
+           "draw_geometries", "render_geometries_png"]

@@ -16,7 +16,7 @@ PACKAGES=(
   libpng-dev libjpeg-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   # rendering: OpenGL through libepoxy, EGL (Mesa: software rendering without a display), GLFW; Xvfb for
   # the tests that need a window
-  libepoxy-dev libglfw3-dev libegl1 libegl-mesa0 libgl1-mesa-dri libopengl0 libgl1 xvfb xauth
+  libepoxy-dev libglfw3-dev libglfw3 libegl1 libegl-mesa0 libgl1-mesa-dri libopengl0 libgl1 xvfb xauth
   # tests and checks
   libcmocka-dev libgtest-dev abigail-tools valgrind
   # python

@@ -7,8 +7,8 @@
  *
  * The renderer draws with OpenGL 3.3 into an offscreen framebuffer. Its context comes from EGL (Mesa's
  * surfaceless platform, no X server; software rendering where there is no GPU) or, when EGL is not
- * there, from a hidden GLFW window (needs a display, e.g. Xvfb). libEGL is looked up at run time, so o3d
- * loads and runs on machines without it.
+ * there, from a hidden GLFW window (needs a display, e.g. Xvfb). libEGL and libglfw are looked up at run
+ * time, so o3d loads and runs on machines without them.
  *
  * Geometries are copied when added: later changes to a handle do not show until it is removed and added
  * again. The camera: a pinhole camera (intrinsic + world-to-camera extrinsic) is used as given; a

@@ -21,15 +21,13 @@ namespace vis = o3d::visualization;
 
 o3d_render_option_t default_option_c();
 
-void put3(double* out, const Eigen::Vector3d& v) {
-    for (int k = 0; k < 3; ++k) out[k] = v[k];
-}
-Eigen::Vector3d get3(const double* v) { return Eigen::Vector3d(v[0], v[1], v[2]); }
+using o3d::capi::vec3;
+using o3d::capi::write3;
 
 o3d_render_option_t to_c(const vis::RenderOption& o) {
     o3d_render_option_t c{};
     c.struct_size = sizeof c;
-    put3(c.background_color, o.background_color);
+    write3(c.background_color, "background_color", o.background_color);
     c.point_size = o.point_size;
     c.line_width = o.line_width;
     c.light_on = o.light_on;
@@ -39,11 +37,11 @@ o3d_render_option_t to_c(const vis::RenderOption& o) {
     c.mesh_shade_option = int32_t(o.mesh_shade);
     c.point_color_option = int32_t(o.point_color);
     c.mesh_color_option = int32_t(o.mesh_color);
-    put3(c.default_mesh_color, o.default_mesh_color);
-    put3(c.light_ambient_color, o.light_ambient_color);
+    write3(c.default_mesh_color, "default_mesh_color", o.default_mesh_color);
+    write3(c.light_ambient_color, "light_ambient_color", o.light_ambient_color);
     for (int i = 0; i < 4; ++i) {
-        put3(c.light_position + 3 * i, o.lights[i].position);
-        put3(c.light_color + 3 * i, o.lights[i].color);
+        write3(c.light_position + 3 * i, "light_position", o.lights[i].position);
+        write3(c.light_color + 3 * i, "light_color", o.lights[i].color);
         c.light_diffuse_power[i] = o.lights[i].diffuse_power;
         c.light_specular_power[i] = o.lights[i].specular_power;
         c.light_specular_shininess[i] = o.lights[i].specular_shininess;
@@ -59,7 +57,7 @@ vis::RenderOption to_core(const o3d_render_option_t* user) {
         return v == 1;
     };
     vis::RenderOption o;
-    o.background_color = get3(c.background_color);
+    o.background_color = vec3(c.background_color, "background_color");
     o.point_size = c.point_size;
     o.line_width = c.line_width;
     o.light_on = flag(c.light_on, "light_on");
@@ -73,11 +71,11 @@ vis::RenderOption to_core(const o3d_render_option_t* user) {
     o.mesh_shade = vis::MeshShade(c.mesh_shade_option);
     o.point_color = vis::ColorOption(c.point_color_option);
     o.mesh_color = vis::ColorOption(c.mesh_color_option);
-    o.default_mesh_color = get3(c.default_mesh_color);
-    o.light_ambient_color = get3(c.light_ambient_color);
+    o.default_mesh_color = vec3(c.default_mesh_color, "default_mesh_color");
+    o.light_ambient_color = vec3(c.light_ambient_color, "light_ambient_color");
     for (int i = 0; i < 4; ++i) {
-        o.lights[i].position = get3(c.light_position + 3 * i);
-        o.lights[i].color = get3(c.light_color + 3 * i);
+        o.lights[i].position = vec3(c.light_position + 3 * i, "light_position");
+        o.lights[i].color = vec3(c.light_color + 3 * i, "light_color");
         o.lights[i].diffuse_power = c.light_diffuse_power[i];
         o.lights[i].specular_power = c.light_specular_power[i];
         o.lights[i].specular_shininess = c.light_specular_shininess[i];
@@ -266,8 +264,7 @@ O3D_API o3d_status o3d_offscreen_renderer_setup_camera_lookat(o3d_offscreen_rend
                                                               const double up[3], double zoom) {
     return guard(__func__, [&] {
         auto& r = renderer_of(renderer);
-        r.setup_camera_lookat(o3d::capi::vec3(lookat, "lookat"), o3d::capi::vec3(front, "front"),
-                              o3d::capi::vec3(up, "up"), zoom);
+        r.setup_camera_lookat(vec3(lookat, "lookat"), vec3(front, "front"), vec3(up, "up"), zoom);
     });
 }
 
@@ -276,8 +273,7 @@ O3D_API o3d_status o3d_offscreen_renderer_setup_camera_fov(o3d_offscreen_rendere
                                                            const double eye[3], const double up[3]) {
     return guard(__func__, [&] {
         auto& r = renderer_of(renderer);
-        r.setup_camera_fov(vertical_fov_deg, o3d::capi::vec3(center, "center"), o3d::capi::vec3(eye, "eye"),
-                           o3d::capi::vec3(up, "up"));
+        r.setup_camera_fov(vertical_fov_deg, vec3(center, "center"), vec3(eye, "eye"), vec3(up, "up"));
     });
 }
 

@@ -169,7 +169,7 @@ void OffscreenRenderer::setup_camera_fov(double fov, const Eigen::Vector3d& cent
 
 camera::PinholeCameraParameters OffscreenRenderer::camera() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return resolve_camera();
+    return resolve_camera(scene_box());
 }
 
 SceneBox OffscreenRenderer::scene_box() const {
@@ -178,20 +178,19 @@ SceneBox OffscreenRenderer::scene_box() const {
     return box;
 }
 
-camera::PinholeCameraParameters OffscreenRenderer::resolve_camera() const {
+camera::PinholeCameraParameters OffscreenRenderer::resolve_camera(const SceneBox& box) const {
     const CameraSetting& c = *camera_;
     switch (c.kind) {
         case CameraSetting::Kind::Pinhole: return c.pinhole;
-        case CameraSetting::Kind::Lookat: return view_from_lookat(c.a, c.b, c.up, c.scalar, scene_box(), width_, height_);
+        case CameraSetting::Kind::Lookat: return view_from_lookat(c.a, c.b, c.up, c.scalar, box, width_, height_);
         case CameraSetting::Kind::Fov: return view_from_eye(c.scalar, c.a, c.b, c.up, width_, height_);
         case CameraSetting::Kind::Default: break;
     }
-    const SceneBox box = scene_box();
     return view_from_lookat(box.center(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), kDefaultZoom, box,
                             width_, height_);
 }
 
-void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp) {
+void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp, double scene_extent) {
     const ShaderProgram& p = program_;
     const RenderOption& o = option_;
     const Material& m = g.material;
@@ -217,7 +216,7 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
             if (o.point_show_normal && g.normal_lines.vao) {
                 glUniform1i(p.lit, 0);
                 set_uniform_color(p, ColorMode::Uniform);
-                glUniform1f(p.normal_line_length, float(size * 0.01 * scene_box().max_extent()));
+                glUniform1f(p.normal_line_length, float(size * 0.01 * scene_extent));
                 glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
                 glBindVertexArray(g.normal_lines.vao);
                 glDrawArrays(GL_LINES, 0, g.normal_lines.count);
@@ -271,7 +270,11 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
     glBindVertexArray(0);
 }
 
-void OffscreenRenderer::draw(const camera::PinholeCameraParameters& cam, double z_near, double z_far) {
+std::pair<double, double> OffscreenRenderer::draw_scene() {
+    // The scene's box, once a frame: the camera, the depth range, the lights and the color maps follow it.
+    const SceneBox box = scene_box();
+    const camera::PinholeCameraParameters cam = resolve_camera(box);
+    const auto [z_near, z_far] = near_far(cam.extrinsic, box);
     const RenderOption& o = option_;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, width_, height_);
@@ -287,7 +290,6 @@ void OffscreenRenderer::draw(const camera::PinholeCameraParameters& cam, double 
     const Eigen::Matrix3d r = cam.extrinsic.block<3, 3>(0, 0);
     const Eigen::Vector3d eye = -r.transpose() * cam.extrinsic.block<3, 1>(0, 3);
     const Eigen::Vector3d right = r.row(0).transpose(), up = -r.row(1).transpose(), front = -r.row(2).transpose();
-    const SceneBox box = scene_box();
 
     const ShaderProgram& p = program_;
     glUseProgram(p.id);
@@ -316,18 +318,17 @@ void OffscreenRenderer::draw(const camera::PinholeCameraParameters& cam, double 
     glUniform1fv(p.light_specular, 4, specular);
     glUniform1fv(p.light_shininess, 4, shininess);
 
-    for (const auto& entry : scene_) draw_geometry(entry.second, mvp);
+    for (const auto& entry : scene_) draw_geometry(entry.second, mvp, box.max_extent());
     glUseProgram(0);
     glFinish();
     check_gl("drawing the scene");
+    return {z_near, z_far};
 }
 
 geometry::Image OffscreenRenderer::render_to_image() {
     std::lock_guard<std::mutex> lock(mutex_);
     CurrentContext current(*context_);
-    const camera::PinholeCameraParameters cam = resolve_camera();
-    const auto [z_near, z_far] = near_far(cam.extrinsic, scene_box());
-    draw(cam, z_near, z_far);
+    draw_scene();
     geometry::Image image;
     image.width = width_;
     image.height = height_;
@@ -348,9 +349,7 @@ geometry::Image OffscreenRenderer::render_to_image() {
 geometry::Image OffscreenRenderer::render_to_depth_image(bool z_in_view_space) {
     std::lock_guard<std::mutex> lock(mutex_);
     CurrentContext current(*context_);
-    const camera::PinholeCameraParameters cam = resolve_camera();
-    const auto [n, f] = near_far(cam.extrinsic, scene_box());
-    draw(cam, n, f);
+    const auto [n, f] = draw_scene();
     std::vector<float> depth(size_t(width_) * size_t(height_));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());

@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 
 #include "o3d/camera/pinhole_camera.h"
 #include "o3d/geometry/image.h"
@@ -56,9 +57,10 @@ private:
     struct CameraSetting;
     void add_uploaded(const std::string& name, GpuGeometry&& geometry);
     SceneBox scene_box() const;
-    camera::PinholeCameraParameters resolve_camera() const;
-    void draw(const camera::PinholeCameraParameters& camera, double z_near, double z_far);
-    void draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp);
+    camera::PinholeCameraParameters resolve_camera(const SceneBox& box) const;
+    /// @brief One frame into the framebuffer; returns the near and far planes it used.
+    std::pair<double, double> draw_scene();
+    void draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp, double scene_extent);
 
     int width_, height_;
     Backend backend_;

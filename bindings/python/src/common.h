@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -164,6 +165,12 @@ struct PyPointCloud : Geom<o3d_pointcloud_t> {
 py::object keepalive(std::shared_ptr<void> p);
 /// Raise o3d.InvalidArgumentError (a ValueError) from the binding itself.
 [[noreturn]] void invalid(const std::string& message);
+/// A Python int narrowed to a C int32 (InvalidArgumentError naming `what` when it does not fit; the C call
+/// then checks the range it accepts).
+inline int32_t int32_of(int64_t v, const char* what) {
+    if (v < INT32_MIN || v > INT32_MAX) invalid(std::string(what) + " is out of range: " + std::to_string(v));
+    return (int32_t)v;
+}
 
 /// A numeric array-like as an ndarray (None, non-arrays and non-numbers raise InvalidArgumentError).
 py::array as_numeric(py::handle obj, const char* what);

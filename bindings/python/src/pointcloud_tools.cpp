@@ -30,11 +30,6 @@ py::array_t<double> vec_array(const double* v, size_t n) {
     return out;
 }
 
-int32_t to_int32(int64_t v, const char* what) {
-    if (v < std::numeric_limits<int32_t>::min() || v > std::numeric_limits<int32_t>::max())
-        invalid(std::string(what) + " is out of range: " + std::to_string(v));
-    return (int32_t)v;
-}
 
 uint64_t seed_of(py::handle seed) {
     if (seed.is_none()) {  // Open3D: a fresh random draw unless seeded
@@ -77,7 +72,7 @@ void define_pointcloud_tools(py::module_& m) {
     cls.def(
            "remove_statistical_outlier",
            [](const PyPointCloud& self, int64_t nb_neighbors, double std_ratio, bool /*print_progress*/) {
-               const int32_t k = to_int32(nb_neighbors, "nb_neighbors");
+               const int32_t k = int32_of(nb_neighbors, "nb_neighbors");
                return outlier_filter(self, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, int32_t* idx,
                                                size_t cap, size_t* n) {
                    return o3d_pointcloud_remove_statistical_outlier(out, idx, cap, n, pc, k, std_ratio);
@@ -90,7 +85,7 @@ void define_pointcloud_tools(py::module_& m) {
         .def(
             "remove_radius_outlier",
             [](const PyPointCloud& self, int64_t nb_points, double radius, bool /*print_progress*/) {
-                const int32_t k = to_int32(nb_points, "nb_points");
+                const int32_t k = int32_of(nb_points, "nb_points");
                 return outlier_filter(self, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc, int32_t* idx,
                                                 size_t cap, size_t* n) {
                     return o3d_pointcloud_remove_radius_outlier(out, idx, cap, n, pc, k, radius);
@@ -124,8 +119,8 @@ void define_pointcloud_tools(py::module_& m) {
             "segment_plane",
             [](const PyPointCloud& self, double distance_threshold, int64_t ransac_n, int64_t num_iterations,
                double probability, py::handle seed) {
-                const int32_t rn = to_int32(ransac_n, "ransac_n");
-                const int32_t it = to_int32(num_iterations, "num_iterations");
+                const int32_t rn = int32_of(ransac_n, "ransac_n");
+                const int32_t it = int32_of(num_iterations, "num_iterations");
                 const uint64_t s = seed_of(seed);
                 std::array<double, 4> plane{};
                 std::vector<int32_t> idx;
@@ -145,7 +140,7 @@ void define_pointcloud_tools(py::module_& m) {
         .def(
             "cluster_dbscan",
             [](const PyPointCloud& self, double eps, int64_t min_points, bool /*print_progress*/) {
-                const int32_t mp = to_int32(min_points, "min_points");
+                const int32_t mp = int32_of(min_points, "min_points");
                 std::vector<int32_t> labels;
                 size_t n = 0;
                 locked_const(self.h, [&](const o3d_pointcloud_t* pc) {

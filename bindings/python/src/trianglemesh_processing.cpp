@@ -35,11 +35,6 @@ size_t non_negative(int64_t v, const char* what) {
     return (size_t)v;
 }
 
-int32_t to_i32(int64_t v, const char* what) {
-    if (v < std::numeric_limits<int32_t>::min() || v > std::numeric_limits<int32_t>::max())
-        invalid(std::string(what) + " is out of range: " + std::to_string(v));
-    return (int32_t)v;
-}
 
 /// Open3D's create_uv_map / map_texture_to_each_face: the C primitives make no UVs, so asking for them
 /// raises rather than silently returning a mesh without them.
@@ -114,7 +109,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "filter_smooth_simple",
             [](const PyTriangleMesh& self, int64_t iterations, FilterScope scope) {
-                const int32_t it = to_i32(iterations, "number_of_iterations");
+                const int32_t it = int32_of(iterations, "number_of_iterations");
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_filter_smooth_simple(out, m, it, (int32_t)scope);
                 });
@@ -123,7 +118,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "filter_smooth_laplacian",
             [](const PyTriangleMesh& self, int64_t iterations, double lambda_filter, FilterScope scope) {
-                const int32_t it = to_i32(iterations, "number_of_iterations");
+                const int32_t it = int32_of(iterations, "number_of_iterations");
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_filter_smooth_laplacian(out, m, it, lambda_filter, (int32_t)scope);
                 });
@@ -132,7 +127,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "filter_smooth_taubin",
             [](const PyTriangleMesh& self, int64_t iterations, double lambda_filter, double mu, FilterScope scope) {
-                const int32_t it = to_i32(iterations, "number_of_iterations");
+                const int32_t it = int32_of(iterations, "number_of_iterations");
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_filter_smooth_taubin(out, m, it, lambda_filter, mu, (int32_t)scope);
                 });
@@ -142,7 +137,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "subdivide_midpoint",
             [](const PyTriangleMesh& self, int64_t iterations) {
-                const int32_t it = to_i32(iterations, "number_of_iterations");
+                const int32_t it = int32_of(iterations, "number_of_iterations");
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_subdivide_midpoint(out, m, it);
                 });
@@ -151,7 +146,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def(
             "subdivide_loop",
             [](const PyTriangleMesh& self, int64_t iterations) {
-                const int32_t it = to_i32(iterations, "number_of_iterations");
+                const int32_t it = int32_of(iterations, "number_of_iterations");
                 return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
                     return o3d_trianglemesh_subdivide_loop(out, m, it);
                 });
@@ -186,7 +181,7 @@ void define_trianglemesh_processing(py::module_& m) {
             "create_sphere",
             [](double radius, int64_t resolution, bool create_uv_map) {
                 no_uv_map(create_uv_map, "create_sphere");
-                const int32_t r = to_i32(resolution, "resolution");
+                const int32_t r = int32_of(resolution, "resolution");
                 return primitive([&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_sphere(out, radius, r); });
             },
             py::arg("radius") = 1.0, py::arg("resolution") = 20, py::arg("create_uv_map") = false)
@@ -194,7 +189,7 @@ void define_trianglemesh_processing(py::module_& m) {
             "create_cylinder",
             [](double radius, double height, int64_t resolution, int64_t split, bool create_uv_map) {
                 no_uv_map(create_uv_map, "create_cylinder");
-                const int32_t r = to_i32(resolution, "resolution"), s = to_i32(split, "split");
+                const int32_t r = int32_of(resolution, "resolution"), s = int32_of(split, "split");
                 return primitive(
                     [&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_cylinder(out, radius, height, r, s); });
             },
@@ -204,7 +199,7 @@ void define_trianglemesh_processing(py::module_& m) {
             "create_cone",
             [](double radius, double height, int64_t resolution, int64_t split, bool create_uv_map) {
                 no_uv_map(create_uv_map, "create_cone");
-                const int32_t r = to_i32(resolution, "resolution"), s = to_i32(split, "split");
+                const int32_t r = int32_of(resolution, "resolution"), s = int32_of(split, "split");
                 return primitive(
                     [&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_cone(out, radius, height, r, s); });
             },
@@ -213,7 +208,7 @@ void define_trianglemesh_processing(py::module_& m) {
         .def_static(
             "create_torus",
             [](double torus_radius, double tube_radius, int64_t radial, int64_t tubular) {
-                const int32_t r = to_i32(radial, "radial_resolution"), t = to_i32(tubular, "tubular_resolution");
+                const int32_t r = int32_of(radial, "radial_resolution"), t = int32_of(tubular, "tubular_resolution");
                 return primitive([&](o3d_trianglemesh_t** out) {
                     return o3d_trianglemesh_create_torus(out, torus_radius, tube_radius, r, t);
                 });
@@ -224,8 +219,8 @@ void define_trianglemesh_processing(py::module_& m) {
             "create_arrow",
             [](double cylinder_radius, double cone_radius, double cylinder_height, double cone_height, int64_t resolution,
                int64_t cylinder_split, int64_t cone_split) {
-                const int32_t r = to_i32(resolution, "resolution"), cs = to_i32(cylinder_split, "cylinder_split"),
-                              ks = to_i32(cone_split, "cone_split");
+                const int32_t r = int32_of(resolution, "resolution"), cs = int32_of(cylinder_split, "cylinder_split"),
+                              ks = int32_of(cone_split, "cone_split");
                 return primitive([&](o3d_trianglemesh_t** out) {
                     return o3d_trianglemesh_create_arrow(out, cylinder_radius, cone_radius, cylinder_height, cone_height, r,
                                                          cs, ks);
@@ -270,9 +265,9 @@ void define_trianglemesh_processing(py::module_& m) {
         [](int64_t length_split, int64_t width_split, int64_t twists, double raidus, double flatness, double width,
            double scale) {
             o3d_mobius_options_t o = init_of(&o3d_mobius_options_init);
-            o.length_split = to_i32(length_split, "length_split");
-            o.width_split = to_i32(width_split, "width_split");
-            o.twists = to_i32(twists, "twists");
+            o.length_split = int32_of(length_split, "length_split");
+            o.width_split = int32_of(width_split, "width_split");
+            o.twists = int32_of(twists, "twists");
             o.radius = raidus;
             o.flatness = flatness;
             o.width = width;

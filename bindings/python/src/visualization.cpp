@@ -3,7 +3,6 @@
 // o3d.visualization.rendering.MaterialRecord / OffscreenRenderer / Open3DScene over visualization.h.
 // Defaults come from o3d_render_option_init and o3d_render_material_init; every check on a value is the
 // C library's, so a bad option raises where the C call rejects it.
-#include <limits>
 
 #include "geometry_types.h"
 
@@ -205,13 +204,6 @@ void add_geometry(const PyScene& scene, const std::string& name, py::handle geom
         throw py::type_error("add_geometry: expected a PointCloud, TriangleMesh, LineSet, VoxelGrid, "
                              "AxisAlignedBoundingBox or OrientedBoundingBox, got " +
                              std::string(py::str(py::type::handle_of(geometry).attr("__name__"))));
-}
-
-/// Checked narrowing of a Python int to the C's int32 (the C call then checks the range it accepts).
-int32_t int32_of(int64_t v, const char* what) {
-    if (v < std::numeric_limits<int32_t>::min() || v > std::numeric_limits<int32_t>::max())
-        invalid(std::string(what) + " is out of range: " + std::to_string(v));
-    return (int32_t)v;
 }
 
 int32_t backend_of(const std::string& name) {

@@ -6,6 +6,7 @@
 
 #include "camera_internal.h"
 #include "internal.h"
+#include "render_option_internal.h"
 #include "o3d/io/image_io.h"
 #include "o3d/visualization/offscreen_renderer.h"
 
@@ -119,13 +120,29 @@ o3d_status add_geometry(const char* function, o3d_offscreen_renderer_t* r, const
     });
 }
 
-o3d_image_t* new_image(o3d::geometry::Image&& image) {
+}  // namespace
+
+namespace o3d::capi {
+
+visualization::RenderOption render_option_to_core(const o3d_render_option_t* user) { return ::to_core(user); }
+
+void write_render_option(o3d_render_option_t* out, const visualization::RenderOption& option) {
+    require(out, "out");
+    read_options(out, default_option_c(), "out");  // validates out->struct_size
+    const o3d_render_option_t c = ::to_c(option);
+    std::memcpy(reinterpret_cast<char*>(out) + sizeof(uint32_t), reinterpret_cast<const char*>(&c) + sizeof(uint32_t),
+                out->struct_size - sizeof(uint32_t));  // only the fields the caller's struct has
+}
+
+o3d_image_t* new_image(geometry::Image&& image) {
     auto handle = std::make_unique<o3d_image>();
     handle->image = std::move(image);
     return handle.release();
 }
 
-}  // namespace
+}  // namespace o3d::capi
+
+using o3d::capi::new_image;
 
 extern "C" {
 
@@ -240,11 +257,7 @@ O3D_API o3d_status o3d_offscreen_renderer_get_render_option(o3d_render_option_t*
                                                             o3d_offscreen_renderer_t* renderer) {
     return guard(__func__, [&] {
         require(out, "out");
-        auto& r = renderer_of(renderer);
-        o3d::capi::read_options(out, default_option_c(), "out");  // validates out->struct_size
-        const o3d_render_option_t c = to_c(r.render_option());
-        std::memcpy(reinterpret_cast<char*>(out) + sizeof(uint32_t), reinterpret_cast<const char*>(&c) + sizeof(uint32_t),
-                    out->struct_size - sizeof(uint32_t));
+        o3d::capi::write_render_option(out, renderer_of(renderer).render_option());
     });
 }
 

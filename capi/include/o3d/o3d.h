@@ -23,5 +23,6 @@
 #include "o3d/voxelgrid.h"
 #include "o3d/octree.h"
 #include "o3d/visualization.h"
+#include "o3d/visualizer.h"
 
 #endif /* O3D_O3D_H */

@@ -43,12 +43,23 @@ ColorMode jet_mode(ColorOption option) {
 
 }  // namespace
 
-OffscreenRenderer::OffscreenRenderer(int width, int height, Backend backend)
-    : width_(width), height_(height), camera_(std::make_unique<CameraSetting>()) {
+/// @brief A context for a renderer of this size (checked first, so a bad size costs no context).
+static std::unique_ptr<GLContext> sized_context(int width, int height, Backend backend) {
     if (width < 1 || width > kMaxSize || height < 1 || height > kMaxSize)
         throw InvalidArgument("renderer size must be 1..16384 pixels each way, got " + std::to_string(width) + " x " +
                               std::to_string(height));
-    context_ = create_gl_context(backend);
+    return create_gl_context(backend);
+}
+
+OffscreenRenderer::OffscreenRenderer(int width, int height, Backend backend)
+    : OffscreenRenderer(width, height, sized_context(width, height, backend)) {}
+
+OffscreenRenderer::OffscreenRenderer(int width, int height, std::unique_ptr<GLContext> context)
+    : width_(width), height_(height), context_(std::move(context)), camera_(std::make_unique<CameraSetting>()) {
+    if (!context_) throw InvalidArgument("a renderer needs an OpenGL context");
+    if (width < 1 || width > kMaxSize || height < 1 || height > kMaxSize)
+        throw InvalidArgument("renderer size must be 1..16384 pixels each way, got " + std::to_string(width) + " x " +
+                              std::to_string(height));
     backend_ = context_->backend();
     CurrentContext current(*context_);
     program_ = build_shader_program();
@@ -170,6 +181,26 @@ void OffscreenRenderer::setup_camera_fov(double fov, const Eigen::Vector3d& cent
 camera::PinholeCameraParameters OffscreenRenderer::camera() {
     std::lock_guard<std::mutex> lock(mutex_);
     return resolve_camera(scene_box());
+}
+
+SceneBox OffscreenRenderer::scene_bounds() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return scene_box();
+}
+
+SceneBox OffscreenRenderer::geometry_bounds(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = scene_.find(name);
+    if (it == scene_.end()) throw InvalidArgument("no geometry named \"" + name + "\" in the scene");
+    return it->second.box;
+}
+
+void OffscreenRenderer::blit_to_default_framebuffer() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    check_gl("copying the frame to the window");
 }
 
 SceneBox OffscreenRenderer::scene_box() const {

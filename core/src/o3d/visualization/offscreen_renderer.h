@@ -23,6 +23,8 @@ class OffscreenRenderer {
 public:
     /// @brief Throws InvalidArgument (size), Unsupported (no context, or the shader does not build).
     OffscreenRenderer(int width, int height, Backend backend);
+    /// @brief Renders with `context` (e.g. a visible window's), which must stay alive as long as this.
+    OffscreenRenderer(int width, int height, std::unique_ptr<GLContext> context);
     ~OffscreenRenderer();
     OffscreenRenderer(const OffscreenRenderer&) = delete;
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
@@ -50,8 +52,24 @@ public:
     /// @brief The pinhole parameters the next render uses.
     camera::PinholeCameraParameters camera();
 
+    /// @brief The box around every geometry in the scene, or around the one named (throws when absent).
+    SceneBox scene_bounds();
+    SceneBox geometry_bounds(const std::string& name);
+    /// @brief The context this renders with.
+    GLContext& context() { return *context_; }
+
     geometry::Image render_to_image();                       ///< RGB, 1 byte per channel
     geometry::Image render_to_depth_image(bool z_in_view_space);  ///< float32
+    /// @brief Render, copy the frame to the context's default framebuffer (a window) and call `swap`
+    /// while the context is still current.
+    template <typename Swap>
+    void render_to_window(Swap&& swap) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        CurrentContext current(*context_);
+        draw_scene();
+        blit_to_default_framebuffer();
+        swap();
+    }
 
 private:
     struct CameraSetting;
@@ -61,6 +79,7 @@ private:
     /// @brief One frame into the framebuffer; returns the near and far planes it used.
     std::pair<double, double> draw_scene();
     void draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp, double scene_extent);
+    void blit_to_default_framebuffer();
 
     int width_, height_;
     Backend backend_;

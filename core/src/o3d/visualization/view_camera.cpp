@@ -66,13 +66,15 @@ double SceneBox::max_extent() const {
 
 camera::PinholeCameraParameters view_from_lookat(const Eigen::Vector3d& lookat, const Eigen::Vector3d& front,
                                                  const Eigen::Vector3d& up, double zoom, const SceneBox& box,
-                                                 int width, int height) {
+                                                 int width, int height, double fov_deg) {
     if (!lookat.allFinite()) throw InvalidArgument("lookat must be finite");
     check_direction_pair(front, up, "front");
     if (!(zoom >= kMinZoom && zoom <= kMaxZoom))
         throw InvalidArgument("zoom must be in [0.02, 2] (Open3D's ViewControl range), got " + std::to_string(zoom));
-    const double distance = zoom * box.max_extent() / std::tan(kDefaultFieldOfView * 0.5 / 180.0 * kPi);
-    return frame_to_parameters(lookat + front.normalized() * distance, front, up, kDefaultFieldOfView, width, height);
+    if (!(fov_deg >= kMinFieldOfView && fov_deg <= kMaxFieldOfView))
+        throw InvalidArgument("field of view must be in [5, 90] degrees, got " + std::to_string(fov_deg));
+    const double distance = zoom * box.max_extent() / std::tan(fov_deg * 0.5 / 180.0 * kPi);
+    return frame_to_parameters(lookat + front.normalized() * distance, front, up, fov_deg, width, height);
 }
 
 camera::PinholeCameraParameters view_from_eye(double vertical_fov_deg, const Eigen::Vector3d& center,

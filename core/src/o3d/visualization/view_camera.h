@@ -28,13 +28,15 @@ constexpr double kDefaultFieldOfView = 60.0;
 constexpr double kDefaultZoom = 0.7;
 constexpr double kMinZoom = 0.02;
 constexpr double kMaxZoom = 2.0;
+constexpr double kMinFieldOfView = 5.0;
+constexpr double kMaxFieldOfView = 90.0;
 
 /// @brief ViewControl.set_lookat/front/up/zoom resolved against `box` as Open3D does: the eye sits at
 /// lookat + front * zoom * extent / tan(fov / 2); fx = fy = height / (2 tan(fov / 2)), principal point
-/// at the image centre (width / 2 - 0.5, height / 2 - 0.5).
+/// at the image centre (width / 2 - 0.5, height / 2 - 0.5). `fov_deg` is the vertical field of view.
 camera::PinholeCameraParameters view_from_lookat(const Eigen::Vector3d& lookat, const Eigen::Vector3d& front,
                                                  const Eigen::Vector3d& up, double zoom, const SceneBox& box,
-                                                 int width, int height);
+                                                 int width, int height, double fov_deg = kDefaultFieldOfView);
 /// @brief A camera at `eye` looking at `center` with a vertical field of view (degrees).
 camera::PinholeCameraParameters view_from_eye(double vertical_fov_deg, const Eigen::Vector3d& center,
                                               const Eigen::Vector3d& eye, const Eigen::Vector3d& up, int width,

@@ -121,6 +121,11 @@ O3D_API o3d_status o3d_visualizer_add_voxelgrid(o3d_visualizer_t* v, const char*
     return add_geometry(__func__, v, name, grid, &o3d_voxelgrid::grid, reset_bounding_box);
 }
 
+O3D_API o3d_status o3d_visualizer_add_image(o3d_visualizer_t* v, const char* name, const o3d_image_t* image,
+                                            int32_t reset_bounding_box) {
+    return add_geometry(__func__, v, name, image, &o3d_image::image, reset_bounding_box);
+}
+
 O3D_API o3d_status o3d_visualizer_remove_geometry(o3d_visualizer_t* v, const char* name, int32_t reset_bounding_box) {
     return guard(__func__, [&] { of(v).remove_geometry(require(name, "name"), reset_bounding_box != 0); });
 }

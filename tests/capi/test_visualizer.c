@@ -404,6 +404,39 @@ static void test_view_status_and_trajectory_playback(void** state) {
     o3d_visualizer_destroy(v);
 }
 
+static void test_image_shown_flat(void** state) {
+    (void)state;
+    o3d_visualizer_t* v = new_window(0);
+    /* 2 x 1 pixels, red then blue: scaled by min(160 / 2, 120 / 1) = 80 to 160 x 80, rows 20..99. */
+    const uint8_t rgb[6] = {255, 0, 0, 0, 0, 255};
+    o3d_image_t* image = NULL;
+    assert_int_equal(o3d_image_create_from_data(&image, 2, 1, 3, 1, rgb, sizeof rgb), O3D_OK);
+    assert_int_equal(o3d_visualizer_add_image(v, "picture", image, 1), O3D_OK);
+    float c[3];
+    screen_at(v, 40, 60, c);
+    assert_true(c[0] == 1.0f && c[1] == 0.0f && c[2] == 0.0f);
+    screen_at(v, 120, 60, c);
+    assert_true(c[0] == 0.0f && c[1] == 0.0f && c[2] == 1.0f);
+    screen_at(v, 80, 10, c);
+    assert_true(c[0] == 1.0f && c[1] == 1.0f && c[2] == 1.0f); /* above the picture: background */
+    screen_at(v, 80, 21, c);
+    assert_true(c[2] == 1.0f && c[1] == 0.0f);
+    /* A cube drawn with it lies over it. */
+    const double green[3] = {0, 1, 0};
+    add_unit_cube(v, green);
+    screen_at(v, W / 2, H / 2, c);
+    assert_true(c[0] == 0.0f && c[1] == 1.0f && c[2] == 0.0f);
+    /* A failed update (3 channels of uint16: no display format) keeps the picture. */
+    o3d_image_t* two = NULL;
+    assert_int_equal(o3d_image_create(&two, 4, 4, 3, 2), O3D_OK);
+    O3D_ASSERT_FAILS(o3d_visualizer_add_image(v, "picture", two, 0), O3D_ERROR_INVALID_ARGUMENT);
+    screen_at(v, 5, 60, c);
+    assert_true(c[0] == 1.0f && c[1] == 0.0f && c[2] == 0.0f);
+    o3d_image_destroy(two);
+    o3d_image_destroy(image);
+    o3d_visualizer_destroy(v);
+}
+
 static void test_errors_never_crash(void** state) {
     (void)state;
     o3d_visualizer_t* v = NULL;
@@ -476,6 +509,7 @@ int main(void) {
         cmocka_unit_test(test_mouse_drag_and_wheel),
         cmocka_unit_test(test_editing_picks_the_clicked_point),
         cmocka_unit_test(test_view_status_and_trajectory_playback),
+        cmocka_unit_test(test_image_shown_flat),
         cmocka_unit_test(test_errors_never_crash),
         cmocka_unit_test(test_visible_window),
     };

@@ -149,6 +149,22 @@ O3D_API o3d_status o3d_visualizer_add_lineset(o3d_visualizer_t* vis, const char*
 O3D_API o3d_status o3d_visualizer_add_voxelgrid(o3d_visualizer_t* vis, const char* name, const o3d_voxelgrid_t* grid,
                                                 int32_t reset_bounding_box);
 /**
+ * @brief o3d_visualizer_add_pointcloud for an image: shown flat under the 3D geometry, scaled to fit the
+ * window with its aspect ratio kept and centred (Open3D's legacy viewer). 1, 3 or 4 channels of uint8;
+ * one channel of uint16 or float32 is shown as gray up to its largest value; 3 of float32 clamped to [0, 1].
+ * An image does not change the view box.
+ *
+ * Threads: the visualizer's thread.
+ * @param vis the visualizer (with a window)
+ * @param name the geometry's name; a taken name is replaced (update)
+ * @param image the image (copied)
+ * @param reset_bounding_box non-zero: the view is reset (the box is unchanged)
+ * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an empty name, no window, an empty image or
+ *   another pixel format.
+ */
+O3D_API o3d_status o3d_visualizer_add_image(o3d_visualizer_t* vis, const char* name, const o3d_image_t* image,
+                                            int32_t reset_bounding_box);
+/**
  * @brief Visualizer.remove_geometry.
  *
  * Threads: the visualizer's thread.

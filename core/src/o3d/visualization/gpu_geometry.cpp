@@ -2,7 +2,10 @@
 #include "o3d/visualization/gpu_geometry.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -88,6 +91,8 @@ void VertexBuffer::release() {
 }
 
 void GpuGeometry::release() {
+    if (texture) glDeleteTextures(1, &texture);
+    texture = 0;
     main.release();
     smooth.release();
     normal_lines.release();
@@ -210,6 +215,73 @@ GpuGeometry upload(const geometry::VoxelGrid& grid, const Material& material) {
         }
     }
     g.main = make_buffer(vertices);
+    return g;
+}
+
+namespace {
+
+/// @brief The image as tightly packed RGB8 (see upload's formats); throws InvalidArgument for others.
+std::vector<uint8_t> to_rgb8(const geometry::Image& image) {
+    const int c = image.num_channels, b = image.bytes_per_channel;
+    const bool ok = (b == 1 && (c == 1 || c == 3 || c == 4)) || (b == 2 && c == 1) || (b == 4 && (c == 1 || c == 3));
+    if (image.empty() || !ok || image.data.size() != image.byte_size())
+        throw InvalidArgument("an image to show needs pixels: 1, 3 or 4 channels of uint8, 1 of uint16, or 1 or 3 of "
+                              "float32");
+    const size_t n = size_t(image.width) * size_t(image.height);
+    std::vector<uint8_t> rgb(3 * n);
+    auto value = [&](size_t i, int k) -> double {
+        const uint8_t* p = image.data.data() + (i * c + k) * b;
+        if (b == 1) return *p / 255.0;
+        if (b == 2) {
+            uint16_t v;
+            std::memcpy(&v, p, 2);
+            return v;
+        }
+        float v;
+        std::memcpy(&v, p, 4);
+        return std::isfinite(v) ? v : 0.0;
+    };
+    double scale = 1.0;  // one channel of depth-like values: gray up to the largest
+    if (c == 1 && b != 1) {
+        double top = 0;
+        for (size_t i = 0; i < n; ++i) top = std::max(top, value(i, 0));
+        scale = top > 0 ? 1.0 / top : 1.0;
+    }
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double v = value(i, c == 1 ? 0 : k) * scale;
+            rgb[3 * i + k] = uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+        }
+    return rgb;
+}
+
+}  // namespace
+
+GpuGeometry upload(const geometry::Image& image, int width, int height) {
+    const std::vector<uint8_t> rgb = to_rgb8(image);
+    GpuGeometry g;
+    g.kind = GeometryKind::Image;
+    g.material.shader = Shader::DefaultUnlit;
+    // The quad's corners in normalized device coordinates, and texture coordinates in the color slot.
+    const double scale = std::min(double(width) / image.width, double(height) / image.height);
+    const float sx = float(image.width * scale / width), sy = float(image.height * scale / height);
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    auto corner = [&](float x, float y, float u, float v) {
+        return vertex(Eigen::Vector3d(x * sx, y * sy, 0), zero, Eigen::Vector3d(u, v, 0));
+    };
+    // Texture row 0 is the image's top row, drawn at the quad's top (y = +1).
+    const std::vector<Vertex> quad = {corner(-1, -1, 0, 1), corner(1, -1, 1, 1), corner(1, 1, 1, 0),
+                                      corner(-1, -1, 0, 1), corner(1, 1, 1, 0), corner(-1, 1, 0, 0)};
+    g.main = make_buffer(quad);
+    glGenTextures(1, &g.texture);
+    glBindTexture(GL_TEXTURE_2D, g.texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // enlarged pixels stay sharp
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
     return g;
 }
 

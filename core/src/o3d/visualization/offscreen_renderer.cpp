@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "o3d/utility/error.h"
@@ -90,26 +91,38 @@ OffscreenRenderer::~OffscreenRenderer() {
 }
 
 template <typename Geometry>
-void OffscreenRenderer::add(const std::string& name, const Geometry& geometry, const Material& material) {
+void OffscreenRenderer::add(const std::string& name, const Geometry& geometry, const Material& material,
+                            bool replace) {
     check_material(material);
     std::lock_guard<std::mutex> lock(mutex_);
     if (name.empty()) throw InvalidArgument("a geometry needs a non-empty name");
-    if (scene_.count(name)) throw InvalidArgument("a geometry named \"" + name + "\" is already in the scene");
+    if (!replace && scene_.count(name))
+        throw InvalidArgument("a geometry named \"" + name + "\" is already in the scene");
     CurrentContext current(*context_);
-    GpuGeometry uploaded = upload(geometry, material);
+    GpuGeometry uploaded = [&] {
+        if constexpr (std::is_same_v<Geometry, geometry::Image>) return upload(geometry, width_, height_);
+        else return upload(geometry, material);
+    }();
     try {
         check_gl("uploading a geometry");
-        scene_.emplace(name, std::move(uploaded));
+        const auto it = scene_.find(name);
+        if (it != scene_.end()) {
+            it->second.release();
+            it->second = std::move(uploaded);
+        } else {
+            scene_.emplace(name, std::move(uploaded));
+        }
     } catch (...) {
         uploaded.release();
         throw;
     }
 }
 
-template void OffscreenRenderer::add(const std::string&, const geometry::PointCloud&, const Material&);
-template void OffscreenRenderer::add(const std::string&, const geometry::TriangleMesh&, const Material&);
-template void OffscreenRenderer::add(const std::string&, const geometry::LineSet&, const Material&);
-template void OffscreenRenderer::add(const std::string&, const geometry::VoxelGrid&, const Material&);
+template void OffscreenRenderer::add(const std::string&, const geometry::PointCloud&, const Material&, bool);
+template void OffscreenRenderer::add(const std::string&, const geometry::TriangleMesh&, const Material&, bool);
+template void OffscreenRenderer::add(const std::string&, const geometry::LineSet&, const Material&, bool);
+template void OffscreenRenderer::add(const std::string&, const geometry::VoxelGrid&, const Material&, bool);
+template void OffscreenRenderer::add(const std::string&, const geometry::Image&, const Material&, bool);
 
 bool OffscreenRenderer::has(const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -230,7 +243,27 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
     glUniform4f(p.base_color, float(m.base_color[0]), float(m.base_color[1]), float(m.base_color[2]),
                 float(m.base_color[3]));
     glUniform1f(p.normal_line_length, 0.0f);
+    glUniform1i(p.textured, 0);
     switch (g.kind) {
+        case GeometryKind::Image: {
+            // Flat on the frame, under everything else: identity transform, no lights, no depth.
+            const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
+            glUniformMatrix4fv(p.mvp, 1, GL_FALSE, identity.data());
+            set_uniform_color(p, ColorMode::Texture);
+            glUniform1i(p.lit, 0);
+            glUniform1i(p.textured, 1);
+            glDisable(GL_CULL_FACE);
+            glDepthMask(GL_FALSE);
+            glDisable(GL_DEPTH_TEST);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, g.texture);
+            glBindVertexArray(g.main.vao);
+            glDrawArrays(GL_TRIANGLES, 0, g.main.count);
+            glBindTexture(GL_TEXTURE_2D, 0);
+            glEnable(GL_DEPTH_TEST);
+            glDepthMask(GL_TRUE);
+            break;
+        }
         case GeometryKind::PointCloud: {
             const double size = m.point_size > 0 ? m.point_size : o.point_size;
             if (o.point_color == ColorOption::Normal)
@@ -349,7 +382,11 @@ std::pair<double, double> OffscreenRenderer::draw_scene() {
     glUniform1fv(p.light_specular, 4, specular);
     glUniform1fv(p.light_shininess, 4, shininess);
 
-    for (const auto& entry : scene_) draw_geometry(entry.second, mvp, box.max_extent());
+    // Images first: they lie flat under the 3D geometry.
+    for (const auto& entry : scene_)
+        if (entry.second.kind == GeometryKind::Image) draw_geometry(entry.second, mvp, box.max_extent());
+    for (const auto& entry : scene_)
+        if (entry.second.kind != GeometryKind::Image) draw_geometry(entry.second, mvp, box.max_extent());
     glUseProgram(0);
     glFinish();
     check_gl("drawing the scene");

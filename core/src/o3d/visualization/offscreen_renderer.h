@@ -34,8 +34,9 @@ public:
     Backend backend() const { return backend_; }
 
     // Scene. Names are unique; add throws InvalidArgument for an empty or taken name.
+    /// `replace`: a geometry of that name is swapped for the new one once it is uploaded (kept on failure).
     template <typename Geometry>
-    void add(const std::string& name, const Geometry& geometry, const Material& material);
+    void add(const std::string& name, const Geometry& geometry, const Material& material, bool replace = false);
     bool has(const std::string& name);
     void remove(const std::string& name);  ///< throws InvalidArgument when absent
     void clear();

@@ -41,7 +41,7 @@ void main() {
     gl_Position = mvp * vec4(p, 1.0);
     v_world = p;
     v_normal = normal;
-    if (color_mode == 0) v_color = color;
+    if (color_mode == 0 || color_mode == 6) v_color = color;
     else if (color_mode == 1) v_color = uniform_color;
     else if (color_mode <= 4) v_color = jet(percentage(color_mode - 2, position));
     else v_color = normal * 0.5 + 0.5;
@@ -53,6 +53,8 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_color;
 uniform int lit;
+uniform int textured;
+uniform sampler2D image;
 uniform vec3 eye;
 uniform vec3 ambient;
 uniform vec4 base_color;
@@ -64,7 +66,7 @@ uniform float light_shininess[4];
 out vec4 frag_color;
 
 void main() {
-    vec3 c = v_color * base_color.rgb;
+    vec3 c = textured != 0 ? texture(image, v_color.xy).rgb : v_color * base_color.rgb;
     if (lit != 0) {
         vec3 n = normalize(v_normal);
         if (!gl_FrontFacing) n = -n;  // a back face shown (mesh_show_back_face) is lit from its side
@@ -135,6 +137,7 @@ ShaderProgram build_shader_program() {
     p.eye = at("eye");
     p.ambient = at("ambient");
     p.base_color = at("base_color");
+    p.textured = at("textured");
     p.light_position = at("light_position");
     p.light_color = at("light_color");
     p.light_diffuse = at("light_diffuse");

@@ -26,6 +26,7 @@ const std::vector<Eigen::Vector3d>* vertices_of(const geometry::PointCloud& g) {
 const std::vector<Eigen::Vector3d>* vertices_of(const geometry::TriangleMesh& g) { return &g.vertices; }
 const std::vector<Eigen::Vector3d>* vertices_of(const geometry::LineSet& g) { return &g.points; }
 const std::vector<Eigen::Vector3d>* vertices_of(const geometry::VoxelGrid&) { return nullptr; }
+const std::vector<Eigen::Vector3d>* vertices_of(const geometry::Image&) { return nullptr; }
 
 }  // namespace
 
@@ -84,9 +85,7 @@ void Visualizer::destroy_window() {
 template <typename Geometry>
 void Visualizer::add_geometry(const std::string& name, const Geometry& geometry, bool reset_bounding_box) {
     require_window("add_geometry");
-    const bool replacing = renderer_->has(name);
-    if (replacing) renderer_->remove(name);
-    renderer_->add(name, geometry, Material{});
+    renderer_->add(name, geometry, Material{}, true);  // an update keeps the old one if the new one fails
     if (editing_ && (editing_name_.empty() || editing_name_ == name)) {
         if (const auto* vertices = vertices_of(geometry)) {
             editing_name_ = name;
@@ -106,6 +105,7 @@ template void Visualizer::add_geometry(const std::string&, const geometry::Point
 template void Visualizer::add_geometry(const std::string&, const geometry::TriangleMesh&, bool);
 template void Visualizer::add_geometry(const std::string&, const geometry::LineSet&, bool);
 template void Visualizer::add_geometry(const std::string&, const geometry::VoxelGrid&, bool);
+template void Visualizer::add_geometry(const std::string&, const geometry::Image&, bool);
 
 void Visualizer::remove_geometry(const std::string& name, bool reset_bounding_box) {
     require_window("remove_geometry");

@@ -45,6 +45,8 @@ abi_check() { tools/abi_check.sh build; }
 # The C headers are the source the bindings are derived from: every function fully documented, and
 # the Doxygen reference builds without a warning.
 capi_docs() { python3 tools/check_capi_docs.py && tools/gen_capi_reference.sh build/capi-reference; }
+# The bindings' enums and option-struct tables are generated from the headers: the committed files must match.
+binding_tables() { python3 tools/gen_binding_tables.py --check; }
 # After the Python install: Python's reach is read from the symbols its extension imports.
 coverage_check() {
   local ext; ext=$(ls .venv/lib/python3*/site-packages/o3d/_o3d*.so 2>/dev/null | head -1)
@@ -69,7 +71,9 @@ python_examples() {
       "$O3D_TEST_DATA/open3d/RGBD/depth/00000.png" "$out/frame.ply" &&
   .venv/bin/python examples/python/mesh_cleanup.py "$O3D_TEST_DATA/open3d/knot.ply" "$out/knot_clean.ply" \
       "$out/knot_samples.ply" &&
-  .venv/bin/python examples/python/multiway_registration.py "$O3D_TEST_DATA/livingroom1_clean_micro"
+  .venv/bin/python examples/python/multiway_registration.py "$O3D_TEST_DATA/livingroom1_clean_micro" &&
+  .venv/bin/python examples/python/figure2.py "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" \
+      "$O3D_TEST_DATA/open3d/knot.ply" --frames 5 --out "$out/figure2"
 }
 # JUnit already ran in ctest (java_junit, on the same classes, loading the natives as the jar does).
 java_package() { (cd bindings/java && mvn -B -ntp -q package -DskipTests -Do3d.swig.dir="$ROOT/build/bindings/swig"); }
@@ -78,6 +82,7 @@ rust_example() {
   local out; out=$(mktemp -d)
   (cd bindings/rust && export O3D_LIB_DIR="$ROOT/build/capi" O3D_INCLUDE_DIR="$ROOT/capi/include" &&
    cargo run -q --example figure1 -- "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$out/down.ply" &&
+   cargo run -q --example figure2 -- "$out/figure2" 12 &&
    cargo run -q --example global_registration -- \
       "$O3D_TEST_DATA/open3d/Feature/cloud_bin_0.pcd" "$O3D_TEST_DATA/open3d/Feature/cloud_bin_1.pcd")
 }
@@ -91,6 +96,7 @@ step "build (ASan+UBSan)" build_sanitized
 step "ctest under ASan+UBSan" ctest_sanitized
 step "ABI check (abidiff against abi/)" abi_check
 step "C API docs and reference" capi_docs
+step "generated binding tables (tools/gen_binding_tables.py --check)" binding_tables
 step "java: mvn package (the jar with its native libraries)" java_package
 step "install + consumers outside the tree (CMake C/C++, pkg-config, dlopen, C#/Unity, Java jar)" \
   scripts/check_consumers.sh build bindings/java/target/o3d-0.1.0.jar

@@ -29,7 +29,9 @@ LANGUAGES = {
     "Rust": ["bindings/rust/o3d/src/**/*.rs"],
 }
 GENERATOR = ROOT / "tools" / "gen_swig_interface.py"
-EXCLUDE = re.compile(r"(/gen/|/generated/|/target/|/tests?/|Test\.cs$|Tests?\.java$)")
+# The generated/ folders of the C++, Python and Rust bindings count: their enum and options tables
+# (tools/gen_binding_tables.py) are compiled into the binding and call each options struct's *_init.
+EXCLUDE = re.compile(r"(/gen/|/target/|/tests?/|Test\.cs$|Tests?\.java$)")
 
 
 def sources(patterns):

@@ -67,7 +67,10 @@ CAPACITY = {
     "o3d_trianglemesh_cluster_connected_triangles": "o3dx_count(o3d_trianglemesh_num_triangles, mesh)",
     "o3d_trianglemesh_compute_convex_hull": "o3dx_count(o3d_trianglemesh_num_vertices, mesh)",
     "o3d_voxelgrid_check_if_included": "xyz.n / 3",
+    "o3d_visualizer_get_picked_points": "query",
 }
+# o3d_buffer_t outputs holding UTF-8 text: returned as a string (o3dx_text: copied once, then freed).
+TEXT = {"o3d_visualizer_get_view_status"}
 # Array inputs whose length two other inputs give.
 LENGTH = {"o3d_feature_create_from_data": "dimension * num", "o3d_kdtree_create_from_points_xd": "dimension * n"}
 PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_correspondence_set"}
@@ -189,13 +192,14 @@ class Gen:
             base = t.rstrip("*")
             field = self.field_name(n, base)
             if t.endswith("**"):
-                results.append((field, f"{base} *", "handle", p, base))
+                text = f["name"] in TEXT
+                results.append((field, "o3dx_text" if text else f"{base} *", "text" if text else "handle", p, base))
             elif base in self.structs:
                 results.append((field, base, "struct", p, base))
             elif p["array"]:
                 results.append((field, f"o3dx_out_{ELEM[base]}", "fixed", p, base))
             else:
-                kind = "bool" if base == "int32_t" and re.search(r"(^|_)(is|has)_", verb) or n == "out_found" else "scalar"
+                kind = "bool" if base == "int32_t" and re.search(r"(^|_)(is|has)_", verb) or n in ("out_found", "out_open") else "scalar"
                 results.append((field, "bool" if kind == "bool" else base, kind, p, base))
         if group:
             arrays, counts = group
@@ -205,7 +209,7 @@ class Gen:
         # locals and the call
         lines = []
         for field, ft, kind, p, base in results:
-            if kind == "handle":
+            if kind in ("handle", "text"):
                 lines.append(f"{base} *{field} = NULL;")
                 args[ps.index(p)] = f"&{field}"
             elif kind == "struct":  # struct_size set, defaults from *_init where it takes no more than the size
@@ -350,7 +354,7 @@ class Gen:
         noun, verb = self.noun_of(f["name"])
         if self.skip_reason(f):
             return None
-        if VIEW.search(verb):
+        if VIEW.search(verb) and any(p["type"].endswith("**") for p in f["params"]):  # not view_get_field_of_view
             return self.emit_view(f, noun, verb)
         decl, lines, body, results, is_method = self.wrapper(f, noun, verb)
         method = verb[:-4] if verb.endswith("_f32") else verb
@@ -368,7 +372,7 @@ class Gen:
         elif len(results) == 1:
             field, ft, kind, p, base = results[0]
             ret = {"scalar": base, "bool": "bool"}.get(kind, ft)
-            tail = f"{field}_" if kind in ("scalar", "bool") else field
+            tail = f"{field}_" if kind in ("scalar", "bool") else f"o3dx_text_of({field})" if kind == "text" else field
             newobj = kind == "handle"
         else:
             ret = f"o3dx_{f['name'][4:]}_result"

@@ -80,6 +80,16 @@ O3DX_CS_OUT(u8, byte)
     return v;
   }
 
+/* text results (o3dx_text): one managed string; the native copy is freed */
+%typemap(ctype) o3dx_text "char *"
+%typemap(imtype) o3dx_text "global::System.IntPtr"
+%typemap(cstype) o3dx_text "string"
+%typemap(out) o3dx_text %{ $result = $1; %}
+%typemap(csout, excode=SWIGEXCODE) o3dx_text {
+    string ret = O3dx.TakeText($imcall);$excode
+    return ret;
+  }
+
 /* raw pointers (callback trampolines, user_data) */
 %typemap(ctype) void * "void *"
 %typemap(imtype) void * "global::System.IntPtr"
@@ -115,6 +125,7 @@ SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback 
     public static extern void O3dCsRegisterExceptionCallback(RaiseDelegate callback);
     [O3d.MonoPInvokeCallback(typeof(RaiseDelegate))]
     static void Raise(int status, string message) {
+      if (SWIGPendingException.Pending) return; // a callback's own exception (src/Visualizer.cs) wins
       SWIGPendingException.Set(status == -1000 ? (global::System.Exception)new global::System.ObjectDisposedException(message)
                                                : new O3d.O3dException(status, message));
     }
@@ -131,10 +142,25 @@ SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback 
   }
 %}
 
-/* ---- callbacks: progress (options structs) and log ------------------------------------------ */
+/* ---- callbacks: progress (options structs), log, Visualizer (src/Visualizer.cs) ----------------- */
+/* Dispose: the native object, then RELEASE (its callbacks' GCHandles) */
+%define O3DX_CS_DISPOSING(T, RELEASE)
+%typemap(csdisposing, methodname="Dispose", methodmodifiers="protected", parameters="bool disposing") T {
+    lock(this) {
+      if (swigCPtr.Handle != global::System.IntPtr.Zero) {
+        if (swigCMemOwn) {
+          swigCMemOwn = false;
+          $imcall;
+        }
+        swigCPtr = new global::System.Runtime.InteropServices.HandleRef(null, global::System.IntPtr.Zero);
+      }
+      RELEASE;
+    }
+  }
+%enddef
 %define O3DX_PROGRESS(T)
+%csmethodmodifiers T::set_progress_native "internal"; /* before the %extend, or it stays public */
 %extend T { void set_progress_native(void *fn, void *user_data) { $self->progress = (o3d_progress_callback)fn; $self->user_data = user_data; } }
-%csmethodmodifiers T::set_progress_native "internal";
 %typemap(cscode) T %{
   // The delegate lives in this field; native code gets a WEAK handle to it, so a callback that captures
   // this options object makes no GC root cycle: an options object never disposed is still finalized.
@@ -154,18 +180,7 @@ SWIGEXPORT void SWIGSTDCALL O3dCsRegisterExceptionCallback(o3dcs_raise_callback 
   /// <summary>The progress callback (see SetProgress).</summary>
   public global::System.Func<double, bool> Progress { get { return progressFn; } set { SetProgress(value); } }
 %}
-%typemap(csdisposing, methodname="Dispose", methodmodifiers="protected", parameters="bool disposing") T {
-    lock(this) {
-      if (swigCPtr.Handle != global::System.IntPtr.Zero) {
-        if (swigCMemOwn) {
-          swigCMemOwn = false;
-          $imcall;
-        }
-        swigCPtr = new global::System.Runtime.InteropServices.HandleRef(null, global::System.IntPtr.Zero);
-      }
-      if (progressHandle.IsAllocated) progressHandle.Free();
-    }
-  }
+O3DX_CS_DISPOSING(T, if (progressHandle.IsAllocated) progressHandle.Free())
 %enddef
 
 %inline %{
@@ -179,3 +194,12 @@ static void set_log_callback_native(void *fn) { o3d_set_log_callback((o3d_log_ca
     SetLogCallbackNative(handler == null ? global::System.IntPtr.Zero : O3dx.LogTrampoline);
   }
 %}
+O3DX_CS_DISPOSING(o3d_visualizer_t, ReleaseCallbacks())
+%csmethodmodifiers o3d_visualizer_t::register_native "internal";
+%csmethodmodifiers o3d_visualizer_t::play_view_trajectory_native "internal";
+%extend o3d_visualizer_t {
+  void register_native(int32_t kind, int32_t key, void *fn, void *user_data) { o3dx_err = o3dx_visualizer_register($self, kind, key, (void (*)(void))fn, user_data); }
+  void play_view_trajectory_native(const char *trajectory_path, const char *capture_dir, int32_t capture_depth, void *fn, void *user_data) {
+    o3dx_err = o3d_visualizer_play_view_trajectory($self, trajectory_path, capture_dir, capture_depth, (o3d_progress_callback)fn, user_data);
+  }
+}

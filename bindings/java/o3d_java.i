@@ -74,6 +74,13 @@ O3DX_JAVA_ARRAY(u8, uint8_t, jbyte, byte, jbyteArray, Byte)
 %typemap(javaout) o3dx_mview { return $jnicall.order(java.nio.ByteOrder.nativeOrder()); }
 %typemap(javaout) o3dx_view { return $jnicall.asReadOnlyBuffer().order(java.nio.ByteOrder.nativeOrder()); }
 
+/* text results (o3dx_text): a String; the native copy is freed */
+%typemap(jni) o3dx_text "jstring"
+%typemap(jtype) o3dx_text "String"
+%typemap(jstype) o3dx_text "String"
+%typemap(javaout) o3dx_text { return $jnicall; }
+%typemap(out) o3dx_text %{ $result = $1 ? (*jenv)->NewStringUTF(jenv, $1) : 0; free($1); %}
+
 /* correspondence checkers: CorrespondenceChecker[] -> one contiguous C array */
 %typemap(jni) o3dx_in_o3d_correspondence_checker_t "jlongArray"
 %typemap(jtype) o3dx_in_o3d_correspondence_checker_t "long[]"
@@ -95,11 +102,18 @@ O3DX_JAVA_ARRAY(u8, uint8_t, jbyte, byte, jbyteArray, Byte)
 
 /* ---- errors: O3dException(status, message); a closed object: IllegalStateException ---------- */
 %{
+static O3DX_TLS jthrowable o3dj_thrown; /* what a Visualizer callback threw: the failed call throws it */
 static void o3dj_raise(JNIEnv *jenv, int status, const char *message) {
   jclass cls;
   jmethodID ctor;
   jobject ex;
   if ((*jenv)->ExceptionCheck(jenv)) return; /* keep the first exception */
+  if (o3dj_thrown) {
+    (*jenv)->Throw(jenv, o3dj_thrown);
+    (*jenv)->DeleteGlobalRef(jenv, o3dj_thrown);
+    o3dj_thrown = 0;
+    return;
+  }
   if (status == O3DX_DISPOSED) {
     cls = (*jenv)->FindClass(jenv, "java/lang/IllegalStateException");
     if (cls) (*jenv)->ThrowNew(jenv, cls, message);
@@ -177,4 +191,71 @@ static void set_log_handler(JNIEnv *jenv_, jobject handler) {
   o3dj_log_handler = handler ? (*jenv_)->NewGlobalRef(jenv_, handler) : 0;
   if (handler) o3d_set_log_callback(o3dj_log, NULL);
 }
+%}
+
+/* ---- Visualizer callbacks: user_data a WEAK global reference to an IntBinaryOperator (action, mods) ->
+   changed, kept by the proxy (a callback capturing the visualizer makes no GC root). A throw is kept
+   (o3dj_thrown), stops the loop (o3d_visualizer_set_callback_error) and comes out of the call that ran it. */
+%{
+static int32_t o3dj_visualizer_key(o3d_visualizer_t *vis, int32_t action, int32_t mods, void *user_data) {
+  int attached;
+  JNIEnv *env = o3dj_env(&attached);
+  int framed = env && !o3dj_thrown && (*env)->PushLocalFrame(env, 4) == 0; /* frees the local references */
+  jobject fn = framed ? (*env)->NewLocalRef(env, (jobject)user_data) : 0;
+  jint changed = fn ? (*env)->CallIntMethod(env, fn, (*env)->GetMethodID(env, (*env)->GetObjectClass(env, fn), "applyAsInt", "(II)I"), action, mods) : 0;
+  jthrowable ex = fn ? (*env)->ExceptionOccurred(env) : 0;
+  if (ex) {
+    (*env)->ExceptionClear(env);
+    o3dj_thrown = (jthrowable)(*env)->NewGlobalRef(env, ex);
+    o3d_visualizer_set_callback_error(vis, "a Java callback threw");
+  }
+  if (framed) (*env)->PopLocalFrame(env, 0);
+  if (attached) (*o3dj_vm)->DetachCurrentThread(o3dj_vm);
+  return changed;
+}
+static int32_t o3dj_visualizer_animation(o3d_visualizer_t *vis, void *user_data) { return o3dj_visualizer_key(vis, 0, 0, user_data); }
+%}
+%rename(closeWindow) o3d_visualizer_t::close; /* close() is AutoCloseable's: it frees */
+%javamethodmodifiers o3d_visualizer_t::register_native "private";
+%javamethodmodifiers o3d_visualizer_t::release_ref "private";
+%extend o3d_visualizer_t {
+  /* kind 0: animation, 1: key, 2: key action; returns the weak reference native code holds */
+  int64_t register_native(JNIEnv *jenv_, int32_t kind, int32_t key, jobject callback) {
+    jweak ref = callback ? (*jenv_)->NewWeakGlobalRef(jenv_, callback) : 0;
+    void (*fn)(void) = !callback ? NULL : kind ? (void (*)(void))o3dj_visualizer_key : (void (*)(void))o3dj_visualizer_animation;
+    if (!o3dj_vm) (*jenv_)->GetJavaVM(jenv_, &o3dj_vm);
+    if ((o3dx_err = o3dx_visualizer_register($self, kind, key, fn, ref)) != O3D_OK && ref) (*jenv_)->DeleteWeakGlobalRef(jenv_, ref);
+    return o3dx_err ? 0 : (int64_t)(intptr_t)ref;
+  }
+  static void release_ref(JNIEnv *jenv_, int64_t ref) { if (ref) (*jenv_)->DeleteWeakGlobalRef(jenv_, (jweak)(intptr_t)ref); }
+  void play_view_trajectory(JNIEnv *jenv_, const char *trajectory_path, const char *capture_dir, int32_t capture_depth, jobject progress) {
+    if (!o3dj_vm) (*jenv_)->GetJavaVM(jenv_, &o3dj_vm);
+    o3dx_err = o3d_visualizer_play_view_trajectory($self, trajectory_path, capture_dir, capture_depth, progress ? o3dj_progress : NULL, progress);
+  }
+}
+%typemap(javadestruct, methodname="delete", methodmodifiers="public synchronized") o3d_visualizer_t {
+    if (swigCPtr != 0 && swigCMemOwn) $jnicall;
+    swigCPtr = 0;
+    swigCMemOwn = false;
+    callbacks.values().forEach(c -> releaseRef(c.getValue()));
+    callbacks.clear();
+  }
+%typemap(javaimports) o3d_visualizer_t "import java.util.*;\nimport java.util.function.*;"
+%typemap(javacode) o3d_visualizer_t %{
+  /** Frees the native viewer now (idempotent) and releases its callbacks; later calls throw IllegalStateException. */
+  @Override public void close() { delete(); }
+  /** A key action callback: action O3D_KEY_ACTION_*, mods O3D_KEY_MOD_* bits; true when the geometry or view changed. */
+  @FunctionalInterface public interface KeyActionCallback { boolean onKey(Visualizer vis, int action, int mods); }
+  /** Called once per loop of run(); true when the geometry or the view changed; null removes it. */
+  public void registerAnimationCallback(Predicate<Visualizer> f) { register(0, -1, f == null ? null : (a, m) -> f.test(this) ? 1 : 0); }
+  /** Called on press and repeat of {@code key} ('A' = 65, Library.KEY_*) instead of o3d's binding; null removes it. */
+  public void registerKeyCallback(int key, Predicate<Visualizer> f) { register(1, key, f == null ? null : (a, m) -> f.test(this) ? 1 : 0); }
+  /** As registerKeyCallback, also on release. */
+  public void registerKeyActionCallback(int key, KeyActionCallback f) { register(2, key, f == null ? null : (a, m) -> f.onKey(this, a, m) ? 1 : 0); }
+  private final Map<Integer, Map.Entry<IntBinaryOperator, Long>> callbacks = new HashMap<>(); // by key, -1: animation
+  private synchronized void register(int kind, int key, IntBinaryOperator fn) {
+    long ref = registerNative(kind, key, fn);
+    Map.Entry<IntBinaryOperator, Long> old = fn == null ? callbacks.remove(kind == 0 ? -1 : key) : callbacks.put(kind == 0 ? -1 : key, Map.entry(fn, ref));
+    if (old != null) releaseRef(old.getValue());
+  }
 %}

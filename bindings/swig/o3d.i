@@ -86,6 +86,24 @@ static size_t o3dx_cols_(o3dx_shape_fn fn, const void *h, int32_t which) {
   return fn(&rows, &cols, h, which) == O3D_OK && cols ? cols : 1;
 }
 #define o3dx_cols(fn, h, which) o3dx_cols_((o3dx_shape_fn)(fn), (h), (which))
+/* UTF-8 text results (TEXT in gen_swig_interface.py): copied out of the buffer, which is destroyed;
+   each language makes its string from the copy and frees it. */
+typedef char *o3dx_text;
+static o3dx_text o3dx_text_of(o3d_buffer_t *b) {
+  const uint8_t *p = NULL;
+  size_t n = 0;
+  char *s = b && o3d_buffer_view(&p, &n, b) == O3D_OK ? (char *)malloc(n + 1) : NULL;
+  if (s) { memcpy(s, p, n); s[n] = 0; } else if (b) o3dx_fail(O3D_ERROR_OUT_OF_MEMORY, "out of memory");
+  o3d_buffer_destroy(b);
+  return s;
+}
+/* The Visualizer's callbacks by kind (0: animation, 1: key, 2: key action); `fn` is the language's
+   trampoline of that kind's type, NULL to remove. */
+static o3d_status o3dx_visualizer_register(o3d_visualizer_t *v, int32_t kind, int32_t key, void (*fn)(void), void *user_data) {
+  if (kind == 0) return o3d_visualizer_register_animation_callback(v, (o3d_visualizer_animation_callback)fn, user_data);
+  return (kind == 1 ? o3d_visualizer_register_key_callback : o3d_visualizer_register_key_action_callback)(
+      v, key, (o3d_visualizer_key_callback)fn, user_data);
+}
 static size_t o3dx_search_count(const o3d_search_result_t *r, int total) {
   size_t nq = 0, n = 0;
   o3d_search_result_counts(&nq, &n, r);

@@ -52,6 +52,9 @@ namespace O3d
             return a;
         }
 
+        /// <summary>A native text result (o3dx_text) as a string; the native copy is freed.</summary>
+        internal static string TakeText(IntPtr p) { string s = Marshal.PtrToStringAnsi(p); if (p != IntPtr.Zero) o3dx_free(p); return s; }
+
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         delegate int ProgressFn(double fraction, IntPtr userData);
         static readonly ProgressFn progress = Progress; // kept alive: native code holds its pointer

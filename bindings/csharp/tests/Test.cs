@@ -297,6 +297,7 @@ static partial class Test
         RegistrationPipelineTests(); // RegistrationPipelineTest.cs
         CameraRgbdTests(); // CameraRgbdTest.cs
         VisualizationTests(); // VisualizationTest.cs
+        VisualizerTests(); // VisualizerTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

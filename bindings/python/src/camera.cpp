@@ -87,10 +87,7 @@ void set_trajectory_parameters(PyTrajectory& self, py::iterable params) {
 }  // namespace
 
 void declare_camera(py::module_& m) {
-    py::enum_<IntrinsicPreset>(m, "PinholeCameraIntrinsicParameters", "Open3D's preset camera intrinsics.")
-        .value("PrimeSenseDefault", IntrinsicPreset::PrimeSenseDefault, "640x480, fx = fy = 525, (319.5, 239.5)")
-        .value("Kinect2DepthCameraDefault", IntrinsicPreset::Kinect2DepthCameraDefault, "512x424")
-        .value("Kinect2ColorCameraDefault", IntrinsicPreset::Kinect2ColorCameraDefault, "1920x1080");
+    def_enum<IntrinsicPreset>(m);
     py::class_<PyIntrinsic>(m, "PinholeCameraIntrinsic", "Image size and pinhole intrinsics fx, fy, cx, cy (pixels).");
     py::class_<PyCameraParameters>(m, "PinholeCameraParameters", "An intrinsic and a 4x4 world-to-camera extrinsic.");
     py::class_<PyTrajectory>(m, "PinholeCameraTrajectory", "A list of PinholeCameraParameters.");

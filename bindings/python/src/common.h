@@ -6,17 +6,21 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "generated/tables.h"  // enums and options fields, from the C headers
 #include "o3d/o3d.h"
 
 namespace o3dpy {
@@ -37,6 +41,34 @@ inline void check(o3d_status s, const std::string& filename = std::string()) {
     if (msg.empty()) msg = o3d_status_string(s);
     o3d_clear_error();
     throw StatusError{s, std::move(msg), filename};
+}
+
+/// Field names of a C struct that one Open3D class shows (Open3D splits some C structs over several classes).
+using FieldNames = std::initializer_list<std::string_view>;
+
+/// Read-write properties over the fields of the C options `o` a Python class holds: those in `names` (default: all
+/// that Fields has), shown as Fields says (bool, number or enum, with the header's doc).
+template <typename T>
+void def_fields(py::class_<T>& cls, FieldNames names = {}) {
+    using C = decltype(T::o);
+    Fields<C>::each([&](const char* name, auto field, auto as, const char* doc) {
+        using Py = typename decltype(as)::type;
+        using F = std::remove_reference_t<decltype(std::declval<C&>().*field)>;
+        if constexpr (!std::is_array_v<F>) {
+            if (names.size() && std::find(names.begin(), names.end(), name) == names.end()) return;
+            cls.def_property(
+                name, [field](const T& self) { return static_cast<Py>(self.o.*field); },
+                [field](T& self, Py v) { self.o.*field = static_cast<F>(v); }, doc);
+        }
+    });
+}
+
+/// Copy the fields `names` of `from` into `to`.
+template <typename C>
+void copy_fields(C& to, const C& from, FieldNames names) {
+    Fields<C>::each([&](const char* name, auto field, auto, const char*) {
+        if (std::find(names.begin(), names.end(), name) != names.end()) std::memcpy(&(to.*field), &(from.*field), sizeof(to.*field));
+    });
 }
 
 /// A C options struct filled by its *_init (the library's defaults).

@@ -3,6 +3,7 @@
 // camera.h). Each owns its C handle through a shared_ptr so numpy views can keep it alive.
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "common.h"
@@ -54,6 +55,24 @@ struct PyCameraParameters {
     PyIntrinsic intrinsic;
     std::array<double, 16> extrinsic{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 };
+
+/// The owner of a live RenderOption (an OffscreenRenderer, a Visualizer): an OptionEdit reads the owner's
+/// option, applies `change` and, when `write`, sets the result, in one step (called with the GIL held;
+/// it releases it for the C calls).
+using OptionChange = std::function<o3d_status(o3d_render_option_t&)>;
+using OptionEdit = std::function<o3d_status(const OptionChange& change, bool write)>;
+/// An o3d.visualization.RenderOption whose fields read and write its owner's option (visualization.cpp).
+py::object live_render_option(OptionEdit edit);
+/// The read-change-write step of an OptionEdit over an owner's get/set_render_option pair.
+template <typename T>
+o3d_status edit_option(T* owner, o3d_status (*get)(o3d_render_option_t*, T*),
+                       o3d_status (*set)(T*, const o3d_render_option_t*), const OptionChange& change, bool write) {
+    o3d_render_option_t o{};
+    o3d_status s = o3d_render_option_init(&o, (uint32_t)sizeof o);
+    if (s == O3D_OK) s = get(&o, owner);
+    if (s == O3D_OK) s = change(o);
+    return s == O3D_OK && write ? set(owner, &o) : s;
+}
 
 /// o3d.camera.PinholeCameraTrajectory over o3d_camera_trajectory_t.
 struct PyTrajectory {
@@ -163,28 +182,6 @@ py::object make_obb(const o3d_obb_t& obb);
 py::array_t<double> rows3_f64(py::handle obj, const char* what);
 /// Python list of int from int32 values.
 py::list int_list(const int32_t* v, size_t n);
-
-/// Enumerations of the new bindings, values equal to the C constants.
-enum class SimplificationContraction : int32_t { Average = O3D_SIMPLIFICATION_AVERAGE, Quadric = O3D_SIMPLIFICATION_QUADRIC };
-enum class FilterScope : int32_t {
-    All = O3D_FILTER_SCOPE_ALL,
-    Color = O3D_FILTER_SCOPE_COLOR,
-    Normal = O3D_FILTER_SCOPE_NORMAL,
-    Vertex = O3D_FILTER_SCOPE_VERTEX
-};
-enum class ImageFilterType : int32_t {
-    Gaussian3 = O3D_IMAGE_FILTER_GAUSSIAN3,
-    Gaussian5 = O3D_IMAGE_FILTER_GAUSSIAN5,
-    Gaussian7 = O3D_IMAGE_FILTER_GAUSSIAN7,
-    Sobel3dx = O3D_IMAGE_FILTER_SOBEL3_DX,
-    Sobel3dy = O3D_IMAGE_FILTER_SOBEL3_DY
-};
-enum class ColorToIntensityConversionType : int32_t { Equal = O3D_IMAGE_CONVERT_EQUAL, Weighted = O3D_IMAGE_CONVERT_WEIGHTED };
-enum class IntrinsicPreset : int32_t {
-    PrimeSenseDefault = O3D_INTRINSIC_PRIMESENSE_DEFAULT,
-    Kinect2DepthCameraDefault = O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
-    Kinect2ColorCameraDefault = O3D_INTRINSIC_KINECT2_COLOR_DEFAULT
-};
 
 void declare_trianglemesh(py::module_& m);
 void declare_trianglemesh_enums(py::module_& m);

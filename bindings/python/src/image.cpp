@@ -105,16 +105,8 @@ PyImage image_from_array(py::handle obj) {
 }
 
 void declare_image(py::module_& m) {
-    py::enum_<ImageFilterType>(m, "ImageFilterType", "Image.filter kernels.")
-        .value("Gaussian3", ImageFilterType::Gaussian3)
-        .value("Gaussian5", ImageFilterType::Gaussian5)
-        .value("Gaussian7", ImageFilterType::Gaussian7)
-        .value("Sobel3dx", ImageFilterType::Sobel3dx)
-        .value("Sobel3dy", ImageFilterType::Sobel3dy);
-    py::enum_<ColorToIntensityConversionType>(m, "ColorToIntensityConversionType",
-                                              "How create_float_image turns color into one channel.")
-        .value("Equal", ColorToIntensityConversionType::Equal, "The mean of R, G and B.")
-        .value("Weighted", ColorToIntensityConversionType::Weighted, "0.299 R + 0.587 G + 0.114 B.");
+    def_enum<ImageFilterType>(m);
+    def_enum<ColorToIntensityConversionType>(m);
     py::class_<PyImage>(m, "Image", py::buffer_protocol(),
                         "A 2D image: 1, 3 or 4 channels of uint8, uint16 or float32. ``Image(array)`` copies an "
                         "(H, W) or (H, W, C) array; ``np.asarray(image)`` is a zero-copy view of its pixels.");

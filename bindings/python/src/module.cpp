@@ -8,6 +8,9 @@ namespace o3dpy {
 // visualization.cpp: RenderOption and the offscreen renderer (o3d.visualization, .rendering).
 void declare_visualization(py::module_& m);
 void define_visualization(py::module_& m);
+// visualizer.cpp: the viewer (Visualizer and its variants, ViewControl).
+void declare_visualizer(py::module_& m);
+void define_visualizer(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -28,6 +31,7 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_voxelgrid(m);
     o::declare_octree(m);
     o::declare_visualization(m);
+    o::declare_visualizer(m);
 
     o::define_utility(m);
     o::define_pointcloud(m);
@@ -47,4 +51,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_voxelgrid(m);
     o::define_octree(m);
     o::define_visualization(m);
+    o::define_visualizer(m);
 }

@@ -4,6 +4,7 @@
 // GlobalOptimization{GaussNewton,LevenbergMarquardt,ConvergenceCriteria,Option}, global_optimization and
 // o3d.io.read_pose_graph / write_pose_graph, over posegraph.h.
 #include <cstdio>
+#include <tuple>
 
 #include "registration_types.h"
 
@@ -31,25 +32,20 @@ struct GaussNewton : Method {
 };
 struct LevenbergMarquardt : Method {};
 
-/// GlobalOptimizationConvergenceCriteria; defaults from o3d_global_optimization_options_init.
-struct Criteria {
-    int32_t max_iteration;
-    double min_relative_increment;
-    double min_relative_residual_increment;
-    double min_right_term;
-    double min_residual;
-    int32_t max_iteration_lm;
-    double upper_scale_factor;
-    double lower_scale_factor;
-};
+o3d_global_optimization_options_t defaults() { return init_of(&o3d_global_optimization_options_init); }
 
-/// GlobalOptimizationOption.
-struct Option {
-    double max_correspondence_distance;
-    double edge_prune_threshold;
-    double preference_loop_closure;
-    int32_t reference_node;
+/// GlobalOptimizationConvergenceCriteria and GlobalOptimizationOption: each the C options, showing its fields.
+struct Criteria {
+    o3d_global_optimization_options_t o = defaults();
 };
+struct Option {
+    o3d_global_optimization_options_t o = defaults();
+};
+const FieldNames criteria_fields = {"max_iteration",  "min_relative_increment", "min_relative_residual_increment",
+                                    "min_right_term", "min_residual",           "max_iteration_lm",
+                                    "upper_scale_factor", "lower_scale_factor"};
+const FieldNames option_fields = {"max_correspondence_distance", "edge_prune_threshold", "preference_loop_closure",
+                                  "reference_node"};
 
 struct Summary {
     int32_t iterations = 0;
@@ -57,23 +53,6 @@ struct Summary {
     double final_residual = 0.0;
     int32_t pruned_edges = 0;
 };
-
-o3d_global_optimization_options_t defaults() {
-    o3d_global_optimization_options_t o = init_of(&o3d_global_optimization_options_init);
-    return o;
-}
-
-Criteria default_criteria() {
-    auto o = defaults();
-    return Criteria{o.max_iteration,    o.min_relative_increment, o.min_relative_residual_increment,
-                    o.min_right_term,   o.min_residual,           o.max_iteration_lm,
-                    o.upper_scale_factor, o.lower_scale_factor};
-}
-
-Option default_option() {
-    auto o = defaults();
-    return Option{o.max_correspondence_distance, o.edge_prune_threshold, o.preference_loop_closure, o.reference_node};
-}
 
 size_t as_index(int64_t i) {
     if (i < 0) throw py::index_error("pose graph index out of range");
@@ -146,23 +125,11 @@ Summary optimize(PyPoseGraph& graph, py::handle method, py::handle criteria, py:
     }
     if (!criteria.is_none()) {
         if (!py::isinstance<Criteria>(criteria)) invalid("criteria: expected GlobalOptimizationConvergenceCriteria");
-        const auto& c = criteria.cast<const Criteria&>();
-        o.max_iteration = c.max_iteration;
-        o.min_relative_increment = c.min_relative_increment;
-        o.min_relative_residual_increment = c.min_relative_residual_increment;
-        o.min_right_term = c.min_right_term;
-        o.min_residual = c.min_residual;
-        o.max_iteration_lm = c.max_iteration_lm;
-        o.upper_scale_factor = c.upper_scale_factor;
-        o.lower_scale_factor = c.lower_scale_factor;
+        copy_fields(o, criteria.cast<const Criteria&>().o, criteria_fields);
     }
     if (!option.is_none()) {
         if (!py::isinstance<Option>(option)) invalid("option: expected GlobalOptimizationOption");
-        const auto& p = option.cast<const Option&>();
-        o.max_correspondence_distance = p.max_correspondence_distance;
-        o.edge_prune_threshold = p.edge_prune_threshold;
-        o.preference_loop_closure = p.preference_loop_closure;
-        o.reference_node = p.reference_node;
+        copy_fields(o, option.cast<const Option&>().o, option_fields);
     }
     o.num_threads = num_threads;
     Progress ctx(std::move(progress));
@@ -270,67 +237,60 @@ void define_pose_graph(py::module_& m) {
         .def(py::init<const LevenbergMarquardt&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const LevenbergMarquardt&) { return std::string("GlobalOptimizationLevenbergMarquardt"); });
 
-    Criteria dc = default_criteria();
-    static_cast<py::class_<Criteria>>(m.attr("GlobalOptimizationConvergenceCriteria"))
-        .def(py::init([](int32_t max_iteration, double min_relative_increment, double min_relative_residual_increment,
+    const o3d_global_optimization_options_t d = defaults();
+    auto criteria = static_cast<py::class_<Criteria>>(m.attr("GlobalOptimizationConvergenceCriteria"));
+    criteria.def(py::init([](int32_t max_iteration, double min_relative_increment, double min_relative_residual_increment,
                          double min_right_term, double min_residual, int32_t max_iteration_lm, double upper_scale_factor,
                          double lower_scale_factor) {
-                 return Criteria{max_iteration,    min_relative_increment, min_relative_residual_increment,
-                                 min_right_term,   min_residual,           max_iteration_lm,
-                                 upper_scale_factor, lower_scale_factor};
+                 Criteria c;
+                 std::tie(c.o.max_iteration, c.o.min_relative_increment, c.o.min_relative_residual_increment,
+                          c.o.min_right_term, c.o.min_residual, c.o.max_iteration_lm, c.o.upper_scale_factor,
+                          c.o.lower_scale_factor) =
+                     std::make_tuple(max_iteration, min_relative_increment, min_relative_residual_increment,
+                                     min_right_term, min_residual, max_iteration_lm, upper_scale_factor, lower_scale_factor);
+                 return c;
              }),
-             py::arg("max_iteration") = dc.max_iteration, py::arg("min_relative_increment") = dc.min_relative_increment,
-             py::arg("min_relative_residual_increment") = dc.min_relative_residual_increment,
-             py::arg("min_right_term") = dc.min_right_term, py::arg("min_residual") = dc.min_residual,
-             py::arg("max_iteration_lm") = dc.max_iteration_lm, py::arg("upper_scale_factor") = dc.upper_scale_factor,
-             py::arg("lower_scale_factor") = dc.lower_scale_factor,
+             py::arg("max_iteration") = d.max_iteration, py::arg("min_relative_increment") = d.min_relative_increment,
+             py::arg("min_relative_residual_increment") = d.min_relative_residual_increment,
+             py::arg("min_right_term") = d.min_right_term, py::arg("min_residual") = d.min_residual,
+             py::arg("max_iteration_lm") = d.max_iteration_lm, py::arg("upper_scale_factor") = d.upper_scale_factor,
+             py::arg("lower_scale_factor") = d.lower_scale_factor,
              "Open3D's defaults; the keyword arguments are an o3d extra (Open3D sets the attributes afterwards).")
         .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
-        .def_readwrite("max_iteration", &Criteria::max_iteration, "Maximum iterations of each of the two passes.")
-        .def_readwrite("min_relative_increment", &Criteria::min_relative_increment)
-        .def_readwrite("min_relative_residual_increment", &Criteria::min_relative_residual_increment)
-        .def_readwrite("min_right_term", &Criteria::min_right_term)
-        .def_readwrite("min_residual", &Criteria::min_residual)
-        .def_readwrite("max_iteration_lm", &Criteria::max_iteration_lm, "Levenberg-Marquardt damping retries per iteration.")
-        .def_readwrite("upper_scale_factor", &Criteria::upper_scale_factor)
-        .def_readwrite("lower_scale_factor", &Criteria::lower_scale_factor)
         .def("__repr__", [](const Criteria& c) {
-            return "GlobalOptimizationConvergenceCriteria\n> max_iteration : " + std::to_string(c.max_iteration) +
-                   "\n> min_relative_increment : " + g6(c.min_relative_increment) +
-                   "\n> min_relative_residual_increment : " + g6(c.min_relative_residual_increment) +
-                   "\n> min_right_term : " + g6(c.min_right_term) + "\n> min_residual : " + g6(c.min_residual) +
-                   "\n> max_iteration_lm : " + std::to_string(c.max_iteration_lm) +
-                   "\n> upper_scale_factor : " + g6(c.upper_scale_factor) + "\n> lower_scale_factor : " + g6(c.lower_scale_factor);
+            return "GlobalOptimizationConvergenceCriteria\n> max_iteration : " + std::to_string(c.o.max_iteration) +
+                   "\n> min_relative_increment : " + g6(c.o.min_relative_increment) +
+                   "\n> min_relative_residual_increment : " + g6(c.o.min_relative_residual_increment) +
+                   "\n> min_right_term : " + g6(c.o.min_right_term) + "\n> min_residual : " + g6(c.o.min_residual) +
+                   "\n> max_iteration_lm : " + std::to_string(c.o.max_iteration_lm) + "\n> upper_scale_factor : " +
+                   g6(c.o.upper_scale_factor) + "\n> lower_scale_factor : " + g6(c.o.lower_scale_factor);
         });
+    def_fields(criteria, criteria_fields);
 
-    Option dopt = default_option();
-    static_cast<py::class_<Option>>(m.attr("GlobalOptimizationOption"))
-        .def(py::init([]() { return default_option(); }),
+    auto option = static_cast<py::class_<Option>>(m.attr("GlobalOptimizationOption"));
+    option.def(py::init<>(),
              "Open3D's defaults: max_correspondence_distance 0.075, edge_prune_threshold 0.25, preference_loop_closure 1.0, "
              "reference_node -1 (the first node).")
         .def(py::init([](double max_correspondence_distance, double edge_prune_threshold, double preference_loop_closure,
                          int32_t reference_node) {
-                 return Option{max_correspondence_distance, edge_prune_threshold, preference_loop_closure, reference_node};
+                 Option p;
+                 std::tie(p.o.max_correspondence_distance, p.o.edge_prune_threshold, p.o.preference_loop_closure,
+                          p.o.reference_node) =
+                     std::make_tuple(max_correspondence_distance, edge_prune_threshold, preference_loop_closure, reference_node);
+                 return p;
              }),
              // As Open3D 0.20: the keyword constructor defaults max_correspondence_distance to 0.03 while
              // GlobalOptimizationOption() gives 0.075; kept, so Open3D scripts get the same result.
-             py::arg("max_correspondence_distance") = 0.03, py::arg("edge_prune_threshold") = dopt.edge_prune_threshold,
-             py::arg("preference_loop_closure") = dopt.preference_loop_closure,
-             py::arg("reference_node") = dopt.reference_node)
+             py::arg("max_correspondence_distance") = 0.03, py::arg("edge_prune_threshold") = d.edge_prune_threshold,
+             py::arg("preference_loop_closure") = d.preference_loop_closure, py::arg("reference_node") = d.reference_node)
         .def(py::init<const Option&>(), py::arg("other"), "Copy constructor")
-        .def_readwrite("max_correspondence_distance", &Option::max_correspondence_distance,
-                       "Sets the line-process scale (the expected registration error of loop closures).")
-        .def_readwrite("edge_prune_threshold", &Option::edge_prune_threshold,
-                       "Uncertain edges whose confidence ends below it are removed.")
-        .def_readwrite("preference_loop_closure", &Option::preference_loop_closure,
-                       "Weight of loop closures against odometry edges.")
-        .def_readwrite("reference_node", &Option::reference_node, "Node kept fixed; -1: the first node.")
-        .def("__repr__", [](const Option& o) {
-            return "GlobalOptimizationOption\n> max_correspondence_distance : " + g6(o.max_correspondence_distance) +
-                   "\n> edge_prune_threshold : " + g6(o.edge_prune_threshold) +
-                   "\n> preference_loop_closure : " + g6(o.preference_loop_closure) +
-                   "\n> reference_node : " + std::to_string(o.reference_node);
+        .def("__repr__", [](const Option& p) {
+            return "GlobalOptimizationOption\n> max_correspondence_distance : " + g6(p.o.max_correspondence_distance) +
+                   "\n> edge_prune_threshold : " + g6(p.o.edge_prune_threshold) +
+                   "\n> preference_loop_closure : " + g6(p.o.preference_loop_closure) +
+                   "\n> reference_node : " + std::to_string(p.o.reference_node);
         });
+    def_fields(option, option_fields);
 
     static_cast<py::class_<Summary>>(m.attr("GlobalOptimizationSummary"))
         .def_readonly("iterations", &Summary::iterations, "Iterations of both passes.")

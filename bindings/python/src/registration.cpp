@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "registration_types.h"
 
@@ -27,10 +28,11 @@ struct Symmetric : Estimation {
     Symmetric() { kind = O3D_ESTIMATION_SYMMETRIC; }
 };
 
+/// ICPConvergenceCriteria: the C options, showing its fields.
 struct Criteria {
-    double relative_fitness, relative_rmse;
-    int32_t max_iteration;
+    o3d_icp_options_t o = init_of(&o3d_icp_options_init);
 };
+const FieldNames criteria_fields = {"relative_fitness", "relative_rmse", "max_iteration"};
 
 py::array_t<double> identity4() {
     py::array_t<double> a(std::vector<py::ssize_t>{4, 4});
@@ -73,10 +75,7 @@ Result icp(const PyPointCloud& source, const PyPointCloud& target, double max_di
     o.epsilon = e.epsilon;
     if (!criteria.is_none()) {
         if (!py::isinstance<Criteria>(criteria)) invalid("criteria: expected ICPConvergenceCriteria");
-        const auto& c = criteria.cast<const Criteria&>();
-        o.relative_fitness = c.relative_fitness;
-        o.relative_rmse = c.relative_rmse;
-        o.max_iteration = c.max_iteration;
+        copy_fields(o, criteria.cast<const Criteria&>().o, criteria_fields);
     }
     o.num_threads = num_threads;
     Progress ctx(progress);
@@ -308,18 +307,21 @@ void define_registration(py::module_& m) {
         .def("__repr__", [](const Symmetric&) { return std::string("TransformationEstimationSymmetric"); });
     def_kernel(sym);
 
-    static_cast<py::class_<Criteria>>(m.attr("ICPConvergenceCriteria"))
-        .def(py::init([](double rf, double rr, int32_t it) { return Criteria{rf, rr, it}; }),
+    auto criteria = static_cast<py::class_<Criteria>>(m.attr("ICPConvergenceCriteria"));
+    criteria
+        .def(py::init([](double rf, double rr, int32_t it) {
+                 Criteria c;
+                 std::tie(c.o.relative_fitness, c.o.relative_rmse, c.o.max_iteration) = std::make_tuple(rf, rr, it);
+                 return c;
+             }),
              py::arg("relative_fitness") = dicp.relative_fitness, py::arg("relative_rmse") = dicp.relative_rmse,
              py::arg("max_iteration") = dicp.max_iteration)
         .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
-        .def_readwrite("relative_fitness", &Criteria::relative_fitness)
-        .def_readwrite("relative_rmse", &Criteria::relative_rmse)
-        .def_readwrite("max_iteration", &Criteria::max_iteration)
         .def("__repr__", [](const Criteria& c) {
-            return "ICPConvergenceCriteria(relative_fitness=" + std::to_string(c.relative_fitness) +
-                   ", relative_rmse=" + std::to_string(c.relative_rmse) + ", max_iteration=" + std::to_string(c.max_iteration) + ")";
+            return "ICPConvergenceCriteria(relative_fitness=" + std::to_string(c.o.relative_fitness) + ", relative_rmse=" +
+                   std::to_string(c.o.relative_rmse) + ", max_iteration=" + std::to_string(c.o.max_iteration) + ")";
         });
+    def_fields(criteria, criteria_fields);
     static_cast<py::class_<Result>>(m.attr("RegistrationResult"))
         .def(py::init([]() {
             Result r;

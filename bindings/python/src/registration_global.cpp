@@ -3,6 +3,7 @@
 // features or given correspondences, FastGlobalRegistrationOption and FGR, and the global random seed.
 // Long calls release the GIL; progress callbacks run on the calling thread with the GIL re-acquired.
 #include <cstdio>
+#include <tuple>
 
 #include "registration_types.h"
 
@@ -26,10 +27,11 @@ struct NormalChecker : Checker {
     explicit NormalChecker(double t) : Checker(O3D_CHECKER_NORMAL, true) { c.threshold = t; }
 };
 
+/// RANSACConvergenceCriteria: the C options, showing its fields.
 struct RansacCriteria {
-    int32_t max_iteration;
-    double confidence;
+    o3d_ransac_options_t o = init_of(&o3d_ransac_options_init);
 };
+const FieldNames ransac_criteria_fields = {"max_iteration", "confidence"};
 
 /// FastGlobalRegistrationOption: the C options (minus threads/progress) plus an optional seed.
 struct FgrOption {
@@ -75,9 +77,7 @@ o3d_ransac_options_t ransac_options(py::handle estimation, int32_t ransac_n, py:
     o.ransac_n = ransac_n;
     if (!criteria.is_none()) {
         if (!py::isinstance<RansacCriteria>(criteria)) invalid("criteria: expected RANSACConvergenceCriteria");
-        const auto& c = criteria.cast<const RansacCriteria&>();
-        o.max_iteration = c.max_iteration;
-        o.confidence = c.confidence;
+        copy_fields(o, criteria.cast<const RansacCriteria&>().o, ransac_criteria_fields);
     }
     std::tie(o.use_seed, o.seed) = seed_fields(seed);
     o.num_threads = num_threads;
@@ -198,13 +198,6 @@ void def_threshold(py::module_& m, const char* cls, const char* field, const cha
         .def("__repr__", [rf, name](const C& c) { return name + " with " + rf + "=" + fixed6(c.c.threshold); });
 }
 
-/// A read-write property over one field of the C options struct.
-template <typename F>
-void def_field(py::class_<FgrOption>& cls, const char* name, F o3d_fgr_options_t::*field) {
-    cls.def_property(
-        name, [field](const FgrOption& f) { return f.o.*field; }, [field](FgrOption& f, F v) { f.o.*field = v; });
-}
-
 }  // namespace
 
 void declare_registration_global(py::module_& m) {
@@ -261,18 +254,22 @@ void define_registration_global(py::module_& m) {
     def_threshold<NormalChecker>(m, "CorrespondenceCheckerBasedOnNormal", "normal_angle_threshold", "normal_threshold",
                                  py::arg("normal_angle_threshold"), "normal_angle_threshold in radians, > 0.");
 
-    static_cast<py::class_<RansacCriteria>>(m.attr("RANSACConvergenceCriteria"))
-        .def(py::init([](int32_t max_iteration, double confidence) { return RansacCriteria{max_iteration, confidence}; }),
+    auto ransac_criteria = static_cast<py::class_<RansacCriteria>>(m.attr("RANSACConvergenceCriteria"));
+    ransac_criteria
+        .def(py::init([](int32_t max_iteration, double confidence) {
+                 RansacCriteria c;
+                 std::tie(c.o.max_iteration, c.o.confidence) = std::make_tuple(max_iteration, confidence);
+                 return c;
+             }),
              py::arg("max_iteration") = rd.max_iteration, py::arg("confidence") = rd.confidence,
              "Stop after max_iteration hypotheses, or once a hypothesis is this confidently the best.")
         .def(py::init<const RansacCriteria&>(), py::arg("other"), "Copy constructor")
-        .def_readwrite("max_iteration", &RansacCriteria::max_iteration)
-        .def_readwrite("confidence", &RansacCriteria::confidence)
         .def("__repr__", [](const RansacCriteria& c) {
             char buf[64];
-            std::snprintf(buf, sizeof buf, "%e", c.confidence);
-            return "RANSACConvergenceCriteria(max_iteration=" + std::to_string(c.max_iteration) + ", confidence=" + buf + ")";
+            std::snprintf(buf, sizeof buf, "%e", c.o.confidence);
+            return "RANSACConvergenceCriteria(max_iteration=" + std::to_string(c.o.max_iteration) + ", confidence=" + buf + ")";
         });
+    def_fields(ransac_criteria, ransac_criteria_fields);
 
     FgrOption fd;
     static_cast<py::class_<FgrOption>>(m.attr("FastGlobalRegistrationOption"))
@@ -319,16 +316,7 @@ void define_registration_global(py::module_& m) {
                    ",\n)";
         });
     auto fgr = static_cast<py::class_<FgrOption>>(m.attr("FastGlobalRegistrationOption"));
-    def_field(fgr, "division_factor", &o3d_fgr_options_t::division_factor);
-    def_field(fgr, "maximum_correspondence_distance", &o3d_fgr_options_t::maximum_correspondence_distance);
-    def_field(fgr, "iteration_number", &o3d_fgr_options_t::iteration_number);
-    def_field(fgr, "tuple_scale", &o3d_fgr_options_t::tuple_scale);
-    def_field(fgr, "maximum_tuple_count", &o3d_fgr_options_t::maximum_tuple_count);
-    for (auto [name, flag] : {std::pair{"use_absolute_scale", &o3d_fgr_options_t::use_absolute_scale},
-                              {"decrease_mu", &o3d_fgr_options_t::decrease_mu}, {"tuple_test", &o3d_fgr_options_t::tuple_test}})
-        fgr.def_property(
-            name, [flag = flag](const FgrOption& f) { return f.o.*flag != 0; },
-            [flag = flag](FgrOption& f, bool v) { f.o.*flag = v ? 1 : 0; });
+    def_fields(fgr);
 
     // Defaults of the Python wrappers (o3d/pipelines/registration.py).
     m.attr("_ransac_defaults") = py::dict(py::arg("ransac_n") = rd.ransac_n, py::arg("num_threads") = rd.num_threads);

@@ -46,15 +46,8 @@ void no_uv_map(bool create_uv_map, const char* fn) {
 }  // namespace
 
 void declare_trianglemesh_enums(py::module_& m) {
-    py::enum_<SimplificationContraction>(m, "SimplificationContraction",
-                                         "How simplify_vertex_clustering places a cluster's vertex.")
-        .value("Average", SimplificationContraction::Average, "The mean of the cluster's vertices.")
-        .value("Quadric", SimplificationContraction::Quadric, "The point minimising the cluster's quadric error.");
-    py::enum_<FilterScope>(m, "FilterScope", "Which vertex attributes the filter_smooth_* calls change.")
-        .value("All", FilterScope::All)
-        .value("Color", FilterScope::Color)
-        .value("Normal", FilterScope::Normal)
-        .value("Vertex", FilterScope::Vertex);
+    def_enum<SimplificationContraction>(m);
+    def_enum<FilterScope>(m);
 }
 
 void define_trianglemesh_processing(py::module_& m) {

@@ -12,25 +12,6 @@ namespace {
 using RendererHandle = Handle<o3d_offscreen_renderer_t, &o3d_offscreen_renderer_destroy>;
 using RendererPtr = std::shared_ptr<RendererHandle>;
 
-enum class MeshShadeOption : int32_t { FlatShade = O3D_MESH_SHADE_FLAT, SmoothShade = O3D_MESH_SHADE_SMOOTH };
-// Open3D has two enums with the same values; pybind11 needs two C++ types to register both.
-#define O3DPY_COLOR_OPTION_VALUES                                                                              \
-    Default = O3D_COLOR_OPTION_DEFAULT, Color = O3D_COLOR_OPTION_COLOR, XCoordinate = O3D_COLOR_OPTION_X,     \
-    YCoordinate = O3D_COLOR_OPTION_Y, ZCoordinate = O3D_COLOR_OPTION_Z, Normal = O3D_COLOR_OPTION_NORMAL
-enum class PointColorOption : int32_t { O3DPY_COLOR_OPTION_VALUES };
-enum class MeshColorOption : int32_t { O3DPY_COLOR_OPTION_VALUES };
-#undef O3DPY_COLOR_OPTION_VALUES
-
-template <typename E>
-void color_option_values(py::enum_<E>& e) {
-    e.value("Default", E::Default, "points: their colors, else a Jet map of z; meshes: default_mesh_color")
-        .value("Color", E::Color, "the geometry's colors, else as Default")
-        .value("XCoordinate", E::XCoordinate, "Jet color map of x over the scene's box")
-        .value("YCoordinate", E::YCoordinate, "Jet color map of y over the scene's box")
-        .value("ZCoordinate", E::ZCoordinate, "Jet color map of z over the scene's box")
-        .value("Normal", E::Normal, "normal * 0.5 + 0.5 (black without normals)");
-}
-
 /// Run `f(renderer)` under the renderer's lock with the GIL released; the status is the caller's to check
 /// (so I/O calls can pass their path to check()).
 template <typename F>
@@ -45,13 +26,23 @@ o3d_status with_renderer(const RendererPtr& r, F&& f) {
 /// `vis.get_render_option().point_size = 3` does.
 struct PyRenderOption {
     o3d_render_option_t v = init_of(&o3d_render_option_init);
-    RendererPtr bound;
+    OptionEdit bound;  // the owner of a live option (a renderer or a Visualizer); empty for a plain value
 };
+
+/// renderer.render_option's owner: the renderer, under its lock.
+OptionEdit renderer_options(const RendererPtr& r) {
+    return [r](const OptionChange& change, bool write) {
+        return with_renderer(r, [&](o3d_offscreen_renderer_t* p) {
+            return edit_option(p, &o3d_offscreen_renderer_get_render_option, &o3d_offscreen_renderer_set_render_option,
+                               change, write);
+        });
+    };
+}
 
 o3d_render_option_t current(const PyRenderOption& o) {
     if (!o.bound) return o.v;
-    o3d_render_option_t out = init_of(&o3d_render_option_init);
-    check(with_renderer(o.bound, [&](o3d_offscreen_renderer_t* r) { return o3d_offscreen_renderer_get_render_option(&out, r); }));
+    o3d_render_option_t out{};
+    check(o.bound([&](o3d_render_option_t& x) { return out = x, O3D_OK; }, false));
     return out;
 }
 
@@ -63,33 +54,28 @@ void update(PyRenderOption& o, F&& change) {
         change(o.v);
         return;
     }
-    check(with_renderer(o.bound, [&](o3d_offscreen_renderer_t* r) {
-        o3d_render_option_t next = o.v;  // for its struct_size; the renderer's values replace the rest
-        o3d_status s = o3d_offscreen_renderer_get_render_option(&next, r);
-        if (s != O3D_OK) return s;
-        change(next);
-        return o3d_offscreen_renderer_set_render_option(r, &next);
-    }));
+    check(o.bound([&](o3d_render_option_t& x) { return change(x), O3D_OK; }, true));
 }
 
-/// A scalar field shown to Python as `Py` (bool, double or an enum) and stored as the C field's type.
+/// A field shown to Python as `Py` (bool, double or an enum; a C array as a (3,) float64 array, a copy: assign
+/// to change it), stored as the C field's type.
 template <typename Py, typename C>
 void def_field(py::class_<PyRenderOption>& cls, const char* name, C o3d_render_option_t::*field, const char* doc) {
-    cls.def_property(
-        name, [field](const PyRenderOption& o) { return static_cast<Py>(current(o).*field); },
-        [field](PyRenderOption& o, Py value) { update(o, [&](o3d_render_option_t& x) { x.*field = static_cast<C>(value); }); },
-        doc);
-}
-
-/// An RGB field: a (3,) float64 array (a copy; assign to change it).
-void def_rgb(py::class_<PyRenderOption>& cls, const char* name, double (o3d_render_option_t::*field)[3], const char* doc) {
-    cls.def_property(
-        name, [field](const PyRenderOption& o) { return vec3_to_array(current(o).*field); },
-        [field, name](PyRenderOption& o, py::handle value) {
-            auto rgb = as_vec3(value, name);
-            update(o, [&](o3d_render_option_t& x) { std::memcpy(x.*field, rgb.data(), sizeof(rgb)); });
-        },
-        doc);
+    if constexpr (std::is_array_v<C>) {
+        static_assert(std::extent_v<C> == 3, "RenderOption shows RGB arrays only");
+        cls.def_property(
+            name, [field](const PyRenderOption& o) { return vec3_to_array(current(o).*field); },
+            [field, name](PyRenderOption& o, py::handle value) {
+                auto rgb = as_vec3(value, name);
+                update(o, [&](o3d_render_option_t& x) { std::memcpy(x.*field, rgb.data(), sizeof(rgb)); });
+            },
+            doc);
+    } else {
+        cls.def_property(
+            name, [field](const PyRenderOption& o) { return static_cast<Py>(current(o).*field); },
+            [field](PyRenderOption& o, Py value) { update(o, [&](o3d_render_option_t& x) { x.*field = static_cast<C>(value); }); },
+            doc);
+    }
 }
 
 /// o3d.visualization.rendering.MaterialRecord: the subset the C material has. `shader` is kept as
@@ -249,12 +235,7 @@ void define_render_option(py::module_& m) {
                 const std::string path = path_of(filename);
                 o3d_status s;
                 if (self.bound) {
-                    s = with_renderer(self.bound, [&](o3d_offscreen_renderer_t* r) {
-                        o3d_render_option_t next = self.v;  // struct_size set; overwritten next
-                        o3d_status st = o3d_offscreen_renderer_get_render_option(&next, r);
-                        if (st == O3D_OK) st = o3d_render_option_load_json(&next, path.c_str());
-                        return st == O3D_OK ? o3d_offscreen_renderer_set_render_option(r, &next) : st;
-                    });
+                    s = self.bound([&](o3d_render_option_t& x) { return o3d_render_option_load_json(&x, path.c_str()); }, true);
                 } else {
                     s = nogil([&] { return o3d_render_option_load_json(&self.v, path.c_str()); });
                 }
@@ -281,21 +262,9 @@ void define_render_option(py::module_& m) {
                         py::cast(static_cast<PointColorOption>(o.point_color_option)),
                         py::cast(static_cast<MeshColorOption>(o.mesh_color_option)));
         });
-    def_rgb(cls, "background_color", &o3d_render_option_t::background_color, "(3,) RGB in [0, 1]; default white.");
-    def_field<double>(cls, "point_size", &o3d_render_option_t::point_size, "Point size in pixels, 1..25; default 5.");
-    def_field<double>(cls, "line_width", &o3d_render_option_t::line_width, "Line width in pixels, 1..10; default 1.");
-    def_field<bool>(cls, "light_on", &o3d_render_option_t::light_on, "Phong lighting of lit materials; default True.");
-    def_field<bool>(cls, "point_show_normal", &o3d_render_option_t::point_show_normal, "Draw each point's normal.");
-    def_field<bool>(cls, "mesh_show_wireframe", &o3d_render_option_t::mesh_show_wireframe, "Draw triangle edges too.");
-    def_field<bool>(cls, "mesh_show_back_face", &o3d_render_option_t::mesh_show_back_face,
-                    "Draw triangles seen from behind (default False: culled).");
-    def_field<MeshShadeOption>(cls, "mesh_shade_option", &o3d_render_option_t::mesh_shade_option, "MeshShadeOption.");
-    def_field<PointColorOption>(cls, "point_color_option", &o3d_render_option_t::point_color_option, "PointColorOption.");
-    def_field<MeshColorOption>(cls, "mesh_color_option", &o3d_render_option_t::mesh_color_option, "MeshColorOption.");
-    def_rgb(cls, "default_mesh_color", &o3d_render_option_t::default_mesh_color,
-            "(3,) color of meshes without colors (o3d extra; Open3D's JSON has it); default 0.7 gray.");
-    def_rgb(cls, "light_ambient_color", &o3d_render_option_t::light_ambient_color,
-            "(3,) ambient light (o3d extra; Open3D's JSON has it); default black.");
+    Fields<o3d_render_option_t>::each([&](const char* name, auto field, auto as, const char* doc) {
+        def_field<typename decltype(as)::type>(cls, name, field, doc);
+    });
 }
 
 void define_material(py::module_& m) {
@@ -357,7 +326,7 @@ void define_scene(py::module_& m) {
                 if (!image.is_none())
                     throw StatusError{O3D_ERROR_UNSUPPORTED, "set_background: a background image is not supported", ""};
                 auto rgba = as_rgba(color, "color");
-                PyRenderOption live{init_of(&o3d_render_option_init), self.h};
+                PyRenderOption live{init_of(&o3d_render_option_init), renderer_options(self.h)};
                 update(live, [&](o3d_render_option_t& x) { std::memcpy(x.background_color, rgba.data(), 3 * sizeof(double)); });
             },
             py::arg("color"), py::arg("image") = py::none(),
@@ -393,7 +362,8 @@ void define_renderer(py::module_& m) {
                                },
                                "(width, height) in pixels (o3d extra).")
         .def_property(
-            "render_option", [](const PyRenderer& self) { return PyRenderOption{init_of(&o3d_render_option_init), self.h}; },
+            "render_option",
+            [](const PyRenderer& self) { return PyRenderOption{init_of(&o3d_render_option_init), renderer_options(self.h)}; },
             [](const PyRenderer& self, const PyRenderOption& o) {
                 const o3d_render_option_t v = current(o);
                 check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) { return o3d_offscreen_renderer_set_render_option(r, &v); }));
@@ -474,14 +444,14 @@ void define_renderer(py::module_& m) {
 
 }  // namespace
 
+py::object live_render_option(OptionEdit edit) {
+    return py::cast(PyRenderOption{init_of(&o3d_render_option_init), std::move(edit)});
+}
+
 void declare_visualization(py::module_& m) {
-    py::enum_<MeshShadeOption>(m, "MeshShadeOption", "RenderOption.mesh_shade_option.")
-        .value("FlatShade", MeshShadeOption::FlatShade, "one normal per triangle")
-        .value("SmoothShade", MeshShadeOption::SmoothShade, "the vertex normals (flat where the mesh has none)");
-    py::enum_<PointColorOption> point_color(m, "PointColorOption", "RenderOption.point_color_option.");
-    color_option_values(point_color);
-    py::enum_<MeshColorOption> mesh_color(m, "MeshColorOption", "RenderOption.mesh_color_option.");
-    color_option_values(mesh_color);
+    def_enum<MeshShadeOption>(m);
+    def_enum<PointColorOption>(m);
+    def_enum<MeshColorOption>(m);
     py::class_<PyRenderOption>(m, "RenderOption", "How geometries are drawn: background, sizes, lights, color options.");
     py::class_<PyMaterial>(m, "MaterialRecord", "A geometry's material: shader, base_color, point_size, line_width.");
     py::class_<PyScene>(m, "Open3DScene", "The geometries of an OffscreenRenderer (renderer.scene).");

@@ -1,5 +1,6 @@
 """draw_geometries without a display: inline in a notebook (its render is the offscreen renderer's with
-draw_geometries' arguments), an UnsupportedError elsewhere."""
+draw_geometries' arguments), an UnsupportedError elsewhere. (With a display it opens a Visualizer window:
+test_visualizer.py.)"""
 import numpy as np
 import pytest
 
@@ -12,6 +13,11 @@ def _cube():
     mesh.paint_uniform_color([0.2, 0.4, 0.8])
     mesh.compute_vertex_normals()
     return mesh
+
+
+@pytest.fixture(autouse=True)
+def no_display(monkeypatch):
+    monkeypatch.delenv("DISPLAY", raising=False)
 
 
 def test_outside_a_notebook_it_raises_and_says_what_to_use(monkeypatch):

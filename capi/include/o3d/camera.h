@@ -29,6 +29,8 @@ typedef struct o3d_pinhole_intrinsic {
     double cy; /**< principal point y, pixels */
 } o3d_pinhole_intrinsic_t;
 
+/** Open3D's PinholeCameraIntrinsicParameters presets (O3D_INTRINSIC_*). */
+typedef int32_t o3d_intrinsic_preset;
 #define O3D_INTRINSIC_PRIMESENSE_DEFAULT 0         /**< 640x480, 525, 525, 319.5, 239.5 */
 #define O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT 1      /**< 512x424, 365.456, 365.456, 254.878, 205.395 */
 #define O3D_INTRINSIC_KINECT2_COLOR_DEFAULT 2      /**< 1920x1080, 1059.9718, 1059.9718, 975.7193, 545.9533 */
@@ -40,7 +42,7 @@ typedef struct o3d_pinhole_intrinsic {
  * @param preset O3D_INTRINSIC_*
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown preset.
  */
-O3D_API o3d_status o3d_pinhole_intrinsic_set_preset(o3d_pinhole_intrinsic_t* out, int32_t preset);
+O3D_API o3d_status o3d_pinhole_intrinsic_set_preset(o3d_pinhole_intrinsic_t* out, o3d_intrinsic_preset preset);
 
 
 /**

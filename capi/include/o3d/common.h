@@ -58,7 +58,18 @@ typedef int32_t o3d_status;
 #define O3D_ERROR_CANCELLED (-8)        /**< a progress callback returned non-zero. */
 #define O3D_ERROR_INTERNAL (-9) /**< a bug or an unexpected failure inside the library. */
 
-/** Log levels, most severe first. */
+/* ---- Value types: int32_t in the ABI, named for what they hold. The bindings show them in their own idiom
+ * (tools/gen_binding_tables.py): a flag as a bool, a count as an unsigned size, a constant group as an enum. */
+
+/** A flag: 0 is false, any other value true. */
+typedef int32_t o3d_bool;
+/** A count or a limit (iterations, threads, neighbours, tuples): >= 0. */
+typedef int32_t o3d_count;
+/** An index, or -1 for none. */
+typedef int32_t o3d_optional_index;
+
+/** Log levels, most severe first (O3D_LOG_*). */
+typedef int32_t o3d_log_level;
 #define O3D_LOG_ERROR 0 /**< errors only */
 #define O3D_LOG_WARNING 1 /**< warnings and errors (the default) */
 #define O3D_LOG_INFO 2 /**< information too */
@@ -133,7 +144,7 @@ O3D_API const char* o3d_status_string(o3d_status status);
  * @brief Receives log lines. Called on the thread that logged (never from inside a parallel region
  * concurrently with itself: logging is serialised by the library).
  */
-typedef void (*o3d_log_callback)(int32_t level, const char* message, void* user_data);
+typedef void (*o3d_log_callback)(o3d_log_level level, const char* message, void* user_data);
 
 /**
  * @brief Show messages at `level` and more severe (default O3D_LOG_WARNING).
@@ -142,14 +153,14 @@ typedef void (*o3d_log_callback)(int32_t level, const char* message, void* user_
  * @param level O3D_LOG_ERROR ... O3D_LOG_DEBUG
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a level outside 0..3.
  */
-O3D_API o3d_status o3d_set_verbosity_level(int32_t level);
+O3D_API o3d_status o3d_set_verbosity_level(o3d_log_level level);
 /**
  * @brief The current log level.
  *
  * Threads: any thread; the level is process-wide.
  * @return the current level (O3D_LOG_*). Never fails.
  */
-O3D_API int32_t o3d_get_verbosity_level(void);
+O3D_API o3d_log_level o3d_get_verbosity_level(void);
 /**
  * @brief Route log lines to `callback` (NULL restores the default sink, stderr).
  *

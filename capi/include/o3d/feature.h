@@ -96,6 +96,8 @@ O3D_API o3d_status o3d_feature_resize(o3d_feature_t* feature, size_t dimension, 
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
  * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
  * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+/** The arrays of a feature (O3D_FEATURE_*). */
+typedef int32_t o3d_feature_array;
 #define O3D_FEATURE_DATA 0 /**< num x dimension float64: row i is the descriptor of point i; set_array keeps the dimension */
 
 /**
@@ -107,7 +109,7 @@ O3D_API o3d_status o3d_feature_resize(o3d_feature_t* feature, size_t dimension, 
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_feature_has_array(int32_t* out, const o3d_feature_t* feature, int32_t which);
+O3D_API o3d_status o3d_feature_has_array(int32_t* out, const o3d_feature_t* feature, o3d_feature_array which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
  * feature.
@@ -119,7 +121,7 @@ O3D_API o3d_status o3d_feature_has_array(int32_t* out, const o3d_feature_t* feat
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_feature_array_shape(size_t* out_rows, size_t* out_cols, const o3d_feature_t* feature, int32_t which);
+O3D_API o3d_status o3d_feature_array_shape(size_t* out_rows, size_t* out_cols, const o3d_feature_t* feature, o3d_feature_array which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  *
@@ -131,7 +133,7 @@ O3D_API o3d_status o3d_feature_array_shape(size_t* out_rows, size_t* out_cols, c
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
  *   unknown `which` (or one of the other type).
  */
-O3D_API o3d_status o3d_feature_set_array(o3d_feature_t* feature, int32_t which, const double* data, size_t rows);
+O3D_API o3d_status o3d_feature_set_array(o3d_feature_t* feature, o3d_feature_array which, const double* data, size_t rows);
 /**
  * @brief As o3d_feature_set_array from float32 values, converted in the one copy.
  *
@@ -143,7 +145,7 @@ O3D_API o3d_status o3d_feature_set_array(o3d_feature_t* feature, int32_t which, 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type) or an array that takes no float32.
  */
-O3D_API o3d_status o3d_feature_set_array_f32(o3d_feature_t* feature, int32_t which, const float* data, size_t rows);
+O3D_API o3d_status o3d_feature_set_array_f32(o3d_feature_t* feature, o3d_feature_array which, const float* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
  * needed. `out` NULL only reports them.
@@ -158,7 +160,7 @@ O3D_API o3d_status o3d_feature_set_array_f32(o3d_feature_t* feature, int32_t whi
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_feature_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_feature_t* feature,
-                                         int32_t which);
+                                         o3d_feature_array which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
  *
@@ -172,7 +174,7 @@ O3D_API o3d_status o3d_feature_get_array(double* out, size_t capacity, size_t* o
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_feature_array_view(const double** out_data, size_t* out_rows, const o3d_feature_t* feature,
-                                          int32_t which);
+                                          o3d_feature_array which);
 /**
  * @brief Borrowed writable view of array `which`: as o3d_feature_array_view; writing through it is a mutating call.
  *
@@ -186,7 +188,7 @@ O3D_API o3d_status o3d_feature_array_view(const double** out_data, size_t* out_r
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_feature_array_mutable_view(double** out_data, size_t* out_rows, o3d_feature_t* feature,
-                                                  int32_t which);
+                                                  o3d_feature_array which);
 
 /**
  * @brief The descriptors of points `indices` (in that order), or of every other point when invert != 0

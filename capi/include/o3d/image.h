@@ -112,6 +112,8 @@ O3D_API o3d_status o3d_image_bytes_per_channel(int32_t* out, const o3d_image_t* 
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
  * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
  * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+/** The arrays of an image (O3D_IMAGE_*: its pixel bytes). */
+typedef int32_t o3d_image_array;
 #define O3D_IMAGE_DATA 0 /**< the pixels: height x width x channels values of bytes_per_channel bytes, in bytes (one byte a row); set_array needs exactly that many */
 
 /**
@@ -123,7 +125,7 @@ O3D_API o3d_status o3d_image_bytes_per_channel(int32_t* out, const o3d_image_t* 
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_image_has_array(int32_t* out, const o3d_image_t* image, int32_t which);
+O3D_API o3d_status o3d_image_has_array(int32_t* out, const o3d_image_t* image, o3d_image_array which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
  * feature.
@@ -135,7 +137,7 @@ O3D_API o3d_status o3d_image_has_array(int32_t* out, const o3d_image_t* image, i
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_image_array_shape(size_t* out_rows, size_t* out_cols, const o3d_image_t* image, int32_t which);
+O3D_API o3d_status o3d_image_array_shape(size_t* out_rows, size_t* out_cols, const o3d_image_t* image, o3d_image_array which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  *
@@ -147,7 +149,7 @@ O3D_API o3d_status o3d_image_array_shape(size_t* out_rows, size_t* out_cols, con
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type) or a byte count other than the image's size.
  */
-O3D_API o3d_status o3d_image_set_array(o3d_image_t* image, int32_t which, const uint8_t* data, size_t rows);
+O3D_API o3d_status o3d_image_set_array(o3d_image_t* image, o3d_image_array which, const uint8_t* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
  * needed. `out` NULL only reports them.
@@ -162,7 +164,7 @@ O3D_API o3d_status o3d_image_set_array(o3d_image_t* image, int32_t which, const 
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_image_get_array(uint8_t* out, size_t capacity, size_t* out_rows, const o3d_image_t* image,
-                                       int32_t which);
+                                       o3d_image_array which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
  *
@@ -176,7 +178,7 @@ O3D_API o3d_status o3d_image_get_array(uint8_t* out, size_t capacity, size_t* ou
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_image_array_view(const uint8_t** out_data, size_t* out_rows, const o3d_image_t* image,
-                                        int32_t which);
+                                        o3d_image_array which);
 /**
  * @brief Borrowed writable view of array `which`: as o3d_image_array_view; writing through it is a mutating call.
  *
@@ -190,8 +192,10 @@ O3D_API o3d_status o3d_image_array_view(const uint8_t** out_data, size_t* out_ro
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_image_array_mutable_view(uint8_t** out_data, size_t* out_rows, o3d_image_t* image,
-                                                int32_t which);
+                                                o3d_image_array which);
 
+/** The filters of Image.filter (O3D_IMAGE_FILTER_*). */
+typedef int32_t o3d_image_filter_type;
 #define O3D_IMAGE_FILTER_GAUSSIAN3 0 /**< 3x3 Gaussian */
 #define O3D_IMAGE_FILTER_GAUSSIAN5 1 /**< 5x5 Gaussian */
 #define O3D_IMAGE_FILTER_GAUSSIAN7 2 /**< 7x7 Gaussian */
@@ -208,7 +212,7 @@ O3D_API o3d_status o3d_image_array_mutable_view(uint8_t** out_data, size_t* out_
  * @param filter_type O3D_IMAGE_FILTER_*
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_image_filter(o3d_image_t** out, const o3d_image_t* image, int32_t filter_type);
+O3D_API o3d_status o3d_image_filter(o3d_image_t** out, const o3d_image_t* image, o3d_image_filter_type filter_type);
 /**
  * @brief Half-size 1-channel float32 image, each pixel the mean of a 2x2 block (a pyramid step).
  *
@@ -240,6 +244,8 @@ O3D_API o3d_status o3d_image_flip_vertical(o3d_image_t** out, const o3d_image_t*
  */
 O3D_API o3d_status o3d_image_flip_horizontal(o3d_image_t** out, const o3d_image_t* image);
 
+/** How Image.create_float_image turns color into gray (O3D_IMAGE_CONVERT_*). */
+typedef int32_t o3d_image_convert;
 #define O3D_IMAGE_CONVERT_EQUAL 0    /**< gray = mean of R, G, B */
 #define O3D_IMAGE_CONVERT_WEIGHTED 1 /**< gray = 0.2990 R + 0.5870 G + 0.1140 B */
 /**
@@ -254,7 +260,7 @@ O3D_API o3d_status o3d_image_flip_horizontal(o3d_image_t** out, const o3d_image_
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_image_create_float_image(o3d_image_t** out, const o3d_image_t* image,
-                                                int32_t convert_type);
+                                                o3d_image_convert convert_type);
 /**
  * @brief Depth in metres: a 1-channel uint16 or float32 depth image divided by `depth_scale` (> 0), with
  * values at or above `depth_trunc` (and non-finite ones) set to 0. Output is 1-channel float32.

@@ -29,15 +29,15 @@ O3D_BEGIN_DECL
 /** Read options (o3d.io.read_point_cloud keyword arguments). */
 typedef struct o3d_read_options {
     uint32_t struct_size;           /**< sizeof(o3d_read_options_t) */
-    int32_t remove_nan_points;      /**< drop points with a NaN coordinate; default 0 */
-    int32_t remove_infinite_points; /**< drop points with an infinite coordinate; default 0 */
+    o3d_bool remove_nan_points;     /**< drop points with a NaN coordinate; default 0 */
+    o3d_bool remove_infinite_points; /**< drop points with an infinite coordinate; default 0 */
 } o3d_read_options_t;
 
 /** Write options (o3d.io.write_point_cloud keyword arguments). */
 typedef struct o3d_write_options {
     uint32_t struct_size; /**< sizeof(o3d_write_options_t) */
-    int32_t write_ascii;  /**< PLY/PCD: text instead of binary; default 0 */
-    int32_t compressed;   /**< PCD: binary_compressed (LZF); default 0 */
+    o3d_bool write_ascii; /**< PLY/PCD: text instead of binary; default 0 */
+    o3d_bool compressed;  /**< PCD: binary_compressed (LZF); default 0 */
 } o3d_write_options_t;
 
 /**
@@ -124,17 +124,17 @@ O3D_API o3d_status o3d_io_write_point_cloud_to_memory(o3d_buffer_t** out, const 
 /** o3d.io.read_triangle_mesh keyword arguments. */
 typedef struct o3d_mesh_read_options {
     uint32_t struct_size;           /**< sizeof(o3d_mesh_read_options_t) */
-    int32_t enable_post_processing; /**< merge duplicated vertices and drop degenerate triangles; default 0 */
+    o3d_bool enable_post_processing; /**< merge duplicated vertices and drop degenerate triangles; default 0 */
 } o3d_mesh_read_options_t;
 
 /** o3d.io.write_triangle_mesh keyword arguments. */
 typedef struct o3d_mesh_write_options {
     uint32_t struct_size;         /**< sizeof(o3d_mesh_write_options_t) */
-    int32_t write_ascii;          /**< PLY/STL: text instead of binary; default 0 */
-    int32_t compressed;           /**< accepted for Open3D compatibility; no format here compresses; default 0 */
-    int32_t write_vertex_normals; /**< default 1 */
-    int32_t write_vertex_colors;  /**< default 1 */
-    int32_t write_triangle_uvs;   /**< default 1 */
+    o3d_bool write_ascii;         /**< PLY/STL: text instead of binary; default 0 */
+    o3d_bool compressed;          /**< accepted for Open3D compatibility; no format here compresses; default 0 */
+    o3d_bool write_vertex_normals; /**< write the vertex normals when the mesh has them; default 1 */
+    o3d_bool write_vertex_colors; /**< write the vertex colors when the mesh has them; default 1 */
+    o3d_bool write_triangle_uvs;  /**< write the triangle UVs (and textures) when the mesh has them; default 1 */
 } o3d_mesh_write_options_t;
 
 /**

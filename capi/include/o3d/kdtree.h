@@ -19,7 +19,8 @@
 
 O3D_BEGIN_DECL
 
-/** Kinds of neighbourhood search (o3d.geometry.KDTreeSearchParam*). */
+/** Kinds of neighbourhood search (o3d.geometry.KDTreeSearchParam*; O3D_SEARCH_*). */
+typedef int32_t o3d_search_kind;
 #define O3D_SEARCH_KNN 0    /**< the `knn` nearest points */
 #define O3D_SEARCH_RADIUS 1 /**< all points within `radius` */
 #define O3D_SEARCH_HYBRID 2 /**< at most `knn` nearest points within `radius` */
@@ -27,8 +28,8 @@ O3D_BEGIN_DECL
 /** Neighbourhood search parameter (KDTreeSearchParamKNN / Radius / Hybrid). */
 typedef struct o3d_search_param {
     uint32_t struct_size; /**< sizeof(o3d_search_param_t), set by o3d_search_param_init */
-    int32_t kind;         /**< O3D_SEARCH_KNN, O3D_SEARCH_RADIUS or O3D_SEARCH_HYBRID; default KNN */
-    int32_t knn;          /**< neighbour count for KNN / HYBRID; default 30 */
+    o3d_search_kind kind; /**< O3D_SEARCH_KNN, O3D_SEARCH_RADIUS or O3D_SEARCH_HYBRID; default KNN */
+    o3d_count knn;        /**< neighbour count for KNN / HYBRID; default 30 */
     double radius;        /**< radius for RADIUS / HYBRID [units of the cloud]; default 0 */
 } o3d_search_param_t;
 

@@ -72,6 +72,8 @@ O3D_API o3d_status o3d_lineset_num_lines(size_t* out_n, const o3d_lineset_t* lin
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
  * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
  * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+/** The arrays of a line set (O3D_LINESET_*). */
+typedef int32_t o3d_lineset_array;
 #define O3D_LINESET_POINTS 0 /**< N x 3 float64 */
 #define O3D_LINESET_COLORS 1 /**< M x 3 RGB in [0,1], one per line */
 #define O3D_LINESET_LINES 100 /**< M x 2 int32 point indices */
@@ -85,7 +87,7 @@ O3D_API o3d_status o3d_lineset_num_lines(size_t* out_n, const o3d_lineset_t* lin
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_lineset_has_array(int32_t* out, const o3d_lineset_t* lineset, int32_t which);
+O3D_API o3d_status o3d_lineset_has_array(int32_t* out, const o3d_lineset_t* lineset, o3d_lineset_array which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
  * feature.
@@ -97,7 +99,7 @@ O3D_API o3d_status o3d_lineset_has_array(int32_t* out, const o3d_lineset_t* line
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_lineset_array_shape(size_t* out_rows, size_t* out_cols, const o3d_lineset_t* lineset, int32_t which);
+O3D_API o3d_status o3d_lineset_array_shape(size_t* out_rows, size_t* out_cols, const o3d_lineset_t* lineset, o3d_lineset_array which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  *
@@ -109,7 +111,7 @@ O3D_API o3d_status o3d_lineset_array_shape(size_t* out_rows, size_t* out_cols, c
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
  *   unknown `which` (or one of the other type).
  */
-O3D_API o3d_status o3d_lineset_set_array(o3d_lineset_t* lineset, int32_t which, const double* data, size_t rows);
+O3D_API o3d_status o3d_lineset_set_array(o3d_lineset_t* lineset, o3d_lineset_array which, const double* data, size_t rows);
 /**
  * @brief As o3d_lineset_set_array from float32 values, converted in the one copy.
  *
@@ -121,7 +123,7 @@ O3D_API o3d_status o3d_lineset_set_array(o3d_lineset_t* lineset, int32_t which, 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type) or an array that takes no float32.
  */
-O3D_API o3d_status o3d_lineset_set_array_f32(o3d_lineset_t* lineset, int32_t which, const float* data, size_t rows);
+O3D_API o3d_status o3d_lineset_set_array_f32(o3d_lineset_t* lineset, o3d_lineset_array which, const float* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
  * needed. `out` NULL only reports them.
@@ -136,7 +138,7 @@ O3D_API o3d_status o3d_lineset_set_array_f32(o3d_lineset_t* lineset, int32_t whi
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_lineset_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_lineset_t* lineset,
-                                         int32_t which);
+                                         o3d_lineset_array which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
  *
@@ -150,7 +152,7 @@ O3D_API o3d_status o3d_lineset_get_array(double* out, size_t capacity, size_t* o
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_lineset_array_view(const double** out_data, size_t* out_rows, const o3d_lineset_t* lineset,
-                                          int32_t which);
+                                          o3d_lineset_array which);
 /**
  * @brief Borrowed writable view of array `which`: as o3d_lineset_array_view; writing through it is a mutating call.
  *
@@ -164,7 +166,7 @@ O3D_API o3d_status o3d_lineset_array_view(const double** out_data, size_t* out_r
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_lineset_array_mutable_view(double** out_data, size_t* out_rows, o3d_lineset_t* lineset,
-                                                  int32_t which);
+                                                  o3d_lineset_array which);
 /**
  * @brief Replace int32 array `which` with `rows` rows of `data` (copied once), as o3d_lineset_set_array.
  *
@@ -176,7 +178,7 @@ O3D_API o3d_status o3d_lineset_array_mutable_view(double** out_data, size_t* out
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
  *   unknown `which` (or one of the other type).
  */
-O3D_API o3d_status o3d_lineset_set_index_array(o3d_lineset_t* lineset, int32_t which, const int32_t* data, size_t rows);
+O3D_API o3d_status o3d_lineset_set_index_array(o3d_lineset_t* lineset, o3d_lineset_array which, const int32_t* data, size_t rows);
 /**
  * @brief Copy int32 array `which` out, with the copy-out rules of o3d_lineset_get_array.
  *
@@ -190,7 +192,7 @@ O3D_API o3d_status o3d_lineset_set_index_array(o3d_lineset_t* lineset, int32_t w
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_lineset_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
-                                               const o3d_lineset_t* lineset, int32_t which);
+                                               const o3d_lineset_t* lineset, o3d_lineset_array which);
 /**
  * @brief Borrowed read-only view of int32 array `which` (ownership as o3d_lineset_array_view).
  *
@@ -204,7 +206,7 @@ O3D_API o3d_status o3d_lineset_get_index_array(int32_t* out, size_t capacity, si
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_lineset_index_array_view(const int32_t** out_data, size_t* out_rows,
-                                                const o3d_lineset_t* lineset, int32_t which);
+                                                const o3d_lineset_t* lineset, o3d_lineset_array which);
 /**
  * @brief Borrowed writable view of int32 array `which`; writing through it is a mutating call.
  *
@@ -218,7 +220,7 @@ O3D_API o3d_status o3d_lineset_index_array_view(const int32_t** out_data, size_t
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_lineset_index_array_mutable_view(int32_t** out_data, size_t* out_rows,
-                                                        o3d_lineset_t* lineset, int32_t which);
+                                                        o3d_lineset_t* lineset, o3d_lineset_array which);
 
 /**
  * @brief Set every line color to `rgb`.

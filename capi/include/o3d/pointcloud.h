@@ -76,6 +76,8 @@ O3D_API o3d_status o3d_pointcloud_clear(o3d_pointcloud_t* pc);
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
  * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
  * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+/** The arrays of a point cloud (O3D_POINTCLOUD_*). */
+typedef int32_t o3d_pointcloud_array;
 #define O3D_POINTCLOUD_POINTS 0 /**< N x 3 float64 */
 #define O3D_POINTCLOUD_NORMALS 1 /**< N x 3, one per point */
 #define O3D_POINTCLOUD_COLORS 2 /**< N x 3 RGB in [0,1], one per point */
@@ -90,7 +92,7 @@ O3D_API o3d_status o3d_pointcloud_clear(o3d_pointcloud_t* pc);
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_pointcloud_has_array(int32_t* out, const o3d_pointcloud_t* pc, int32_t which);
+O3D_API o3d_status o3d_pointcloud_has_array(int32_t* out, const o3d_pointcloud_t* pc, o3d_pointcloud_array which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
  * feature.
@@ -102,7 +104,7 @@ O3D_API o3d_status o3d_pointcloud_has_array(int32_t* out, const o3d_pointcloud_t
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_pointcloud_array_shape(size_t* out_rows, size_t* out_cols, const o3d_pointcloud_t* pc, int32_t which);
+O3D_API o3d_status o3d_pointcloud_array_shape(size_t* out_rows, size_t* out_cols, const o3d_pointcloud_t* pc, o3d_pointcloud_array which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  *
@@ -114,7 +116,7 @@ O3D_API o3d_status o3d_pointcloud_array_shape(size_t* out_rows, size_t* out_cols
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type) or asymmetric covariances.
  */
-O3D_API o3d_status o3d_pointcloud_set_array(o3d_pointcloud_t* pc, int32_t which, const double* data, size_t rows);
+O3D_API o3d_status o3d_pointcloud_set_array(o3d_pointcloud_t* pc, o3d_pointcloud_array which, const double* data, size_t rows);
 /**
  * @brief As o3d_pointcloud_set_array from float32 values, converted in the one copy.
  *
@@ -126,7 +128,7 @@ O3D_API o3d_status o3d_pointcloud_set_array(o3d_pointcloud_t* pc, int32_t which,
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type), asymmetric covariances or an array that takes no float32.
  */
-O3D_API o3d_status o3d_pointcloud_set_array_f32(o3d_pointcloud_t* pc, int32_t which, const float* data, size_t rows);
+O3D_API o3d_status o3d_pointcloud_set_array_f32(o3d_pointcloud_t* pc, o3d_pointcloud_array which, const float* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
  * needed. `out` NULL only reports them.
@@ -141,7 +143,7 @@ O3D_API o3d_status o3d_pointcloud_set_array_f32(o3d_pointcloud_t* pc, int32_t wh
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_pointcloud_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_pointcloud_t* pc,
-                                            int32_t which);
+                                            o3d_pointcloud_array which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
  *
@@ -155,7 +157,7 @@ O3D_API o3d_status o3d_pointcloud_get_array(double* out, size_t capacity, size_t
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_pointcloud_array_view(const double** out_data, size_t* out_rows, const o3d_pointcloud_t* pc,
-                                             int32_t which);
+                                             o3d_pointcloud_array which);
 /**
  * @brief Borrowed writable view of array `which`: as o3d_pointcloud_array_view; writing through it is a mutating
  * call.
@@ -170,7 +172,7 @@ O3D_API o3d_status o3d_pointcloud_array_view(const double** out_data, size_t* ou
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_pointcloud_array_mutable_view(double** out_data, size_t* out_rows, o3d_pointcloud_t* pc,
-                                                     int32_t which);
+                                                     o3d_pointcloud_array which);
 
 /**
  * @brief Concatenate `other` onto `pc` (Open3D `pcd += other`): normals/colors survive only when both
@@ -643,7 +645,7 @@ typedef struct o3d_depth_to_cloud_options {
     double depth_scale;               /**< raw units per metre for uint16 depth; default 1000 */
     double depth_trunc;               /**< depths at or beyond this are dropped (metres); default 1000 */
     int32_t stride;                   /**< use every stride-th pixel in x and y; default 1 */
-    int32_t project_valid_depth_only; /**< 0: invalid pixels give NaN points (organised cloud); default 1 */
+    o3d_bool project_valid_depth_only; /**< 0: invalid pixels give NaN points (organised cloud); default 1 */
 } o3d_depth_to_cloud_options_t;
 
 /**

@@ -23,14 +23,14 @@
 O3D_BEGIN_DECL
 
 
-/** PoseGraphEdge. */
+/** A pose-graph edge (o3d.pipelines.registration.PoseGraphEdge). */
 typedef struct o3d_pose_graph_edge {
     uint32_t struct_size;      /**< sizeof(o3d_pose_graph_edge_t) */
-    int32_t source_node_id;    /**< default 0 */
-    int32_t target_node_id;    /**< default 0 */
-    double transformation[16]; /**< default identity */
-    double information[36];    /**< default identity */
-    int32_t uncertain;         /**< 1: a loop closure the line process may prune; default 0 (odometry) */
+    int32_t source_node_id;    /**< index of the source node; default 0 */
+    int32_t target_node_id;    /**< index of the target node; default 0 */
+    double transformation[16]; /**< row-major 4x4: maps points of the source node's frame into the target node's; default identity */
+    double information[36];    /**< row-major 6x6 information matrix (rotation first, then translation, as Open3D); default identity */
+    o3d_bool uncertain;        /**< 1: a loop closure the line process may prune; default 0 (odometry) */
     double confidence;         /**< line-process weight in [0, 1]; default 1 */
 } o3d_pose_graph_edge_t;
 
@@ -160,27 +160,28 @@ O3D_API o3d_status o3d_pose_graph_set_edge(o3d_pose_graph_t* graph, size_t index
  */
 O3D_API o3d_status o3d_pose_graph_clear(o3d_pose_graph_t* graph);
 
-
+/** The solvers of global_optimization (O3D_GLOBAL_OPTIMIZATION_*). */
+typedef int32_t o3d_global_optimization_method;
 #define O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON 0        /**< GlobalOptimizationGaussNewton */
 #define O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT 1 /**< GlobalOptimizationLevenbergMarquardt */
 
 /** GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption, method, threads, progress. */
 typedef struct o3d_global_optimization_options {
     uint32_t struct_size;                   /**< sizeof(o3d_global_optimization_options_t) */
-    int32_t method;                         /**< O3D_GLOBAL_OPTIMIZATION_*; default LEVENBERG_MARQUARDT */
-    int32_t max_iteration;                  /**< >= 0; default 100 */
+    o3d_global_optimization_method method;  /**< O3D_GLOBAL_OPTIMIZATION_*; default LEVENBERG_MARQUARDT */
+    o3d_count max_iteration;                /**< iterations per pass; default 100 */
     double min_relative_increment;          /**< default 1e-6 */
     double min_relative_residual_increment; /**< default 1e-6 */
     double min_right_term;                  /**< default 1e-6 */
     double min_residual;                    /**< default 1e-6 */
-    int32_t max_iteration_lm;               /**< LM damping retries per iteration; default 20 */
+    o3d_count max_iteration_lm;             /**< LM damping retries per iteration; default 20 */
     double upper_scale_factor;              /**< LM; default 2/3 */
     double lower_scale_factor;              /**< LM; default 1/3 */
     double max_correspondence_distance;     /**< sets the line-process scale mu; default 0.075 */
     double edge_prune_threshold;            /**< uncertain edges whose confidence ends below it are removed; default 0.25 */
     double preference_loop_closure;         /**< weight of loop closures against odometry; default 1.0 */
-    int32_t reference_node;                 /**< node kept fixed; -1 (default): the first node */
-    int32_t num_threads;                    /**< >= 0; 0 = library default; the result does not depend on it */
+    o3d_optional_index reference_node;      /**< node kept fixed; -1 (default): the first node */
+    o3d_count num_threads;                  /**< 0 = library default; the result does not depend on it */
     o3d_progress_callback progress;         /**< fraction of max_iteration done over both passes; may be NULL */
     void* user_data; /**< passed to `progress` */
 } o3d_global_optimization_options_t;

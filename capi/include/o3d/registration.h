@@ -22,7 +22,8 @@
 
 O3D_BEGIN_DECL
 
-/** Transformation estimation methods. */
+/** Transformation estimation methods (O3D_ESTIMATION_*). */
+typedef int32_t o3d_estimation;
 #define O3D_ESTIMATION_POINT_TO_POINT 0 /**< TransformationEstimationPointToPoint */
 #define O3D_ESTIMATION_POINT_TO_PLANE 1 /**< TransformationEstimationPointToPlane (target needs normals) */
 /** TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the target normals. */
@@ -33,7 +34,8 @@ O3D_BEGIN_DECL
 /** TransformationEstimationSymmetric (Rusinkiewicz 2019, symmetric point-to-plane): both clouds need normals. */
 #define O3D_ESTIMATION_SYMMETRIC 4
 
-/** Robust kernels (M-estimators) weighting each residual r; k is the kernel's scale. */
+/** Robust kernels (M-estimators) weighting each residual r; k is the kernel's scale (O3D_KERNEL_*). */
+typedef int32_t o3d_robust_kernel;
 #define O3D_KERNEL_L2 0     /**< L2Loss: w = 1 */
 #define O3D_KERNEL_L1 1     /**< L1Loss: w = 1 / |r| */
 #define O3D_KERNEL_HUBER 2  /**< HuberLoss(k): w = 1 if |r| <= k else k / |r| */
@@ -44,15 +46,15 @@ O3D_BEGIN_DECL
 /** ICP options: estimation method and ICPConvergenceCriteria. */
 typedef struct o3d_icp_options {
     uint32_t struct_size;        /**< sizeof(o3d_icp_options_t) */
-    int32_t estimation;          /**< O3D_ESTIMATION_*; default POINT_TO_POINT */
-    int32_t with_scaling;        /**< point-to-point only (ignored for point-to-plane): also estimate a scale; default 0 */
+    o3d_estimation estimation;   /**< O3D_ESTIMATION_*; default POINT_TO_POINT */
+    o3d_bool with_scaling;       /**< point-to-point only (ignored for point-to-plane): also estimate a scale; default 0 */
     double relative_fitness;     /**< >= 0; stop when fitness changes less than this; default 1e-6 */
     double relative_rmse;        /**< >= 0; stop when inlier RMSE changes less than this; default 1e-6 */
-    int32_t max_iteration;       /**< >= 0; default 30 */
-    int32_t num_threads;         /**< >= 0; 0 = library default */
+    o3d_count max_iteration;     /**< iteration limit; default 30 */
+    o3d_count num_threads;       /**< 0 = library default */
     o3d_progress_callback progress; /**< called after each iteration with (iteration+1)/max_iteration; may be NULL */
     void* user_data;             /**< passed to `progress` */
-    int32_t kernel;              /**< O3D_KERNEL_*, for point-to-plane, colored, generalized, symmetric; default L2 */
+    o3d_robust_kernel kernel;    /**< O3D_KERNEL_*, for point-to-plane, colored, generalized, symmetric; default L2 */
     double kernel_k;             /**< the kernel's k (> 0; unused by L2 and L1); default 1.0 */
     double lambda_geometric;     /**< colored ICP: weight of the geometric term, in [0, 1]; default 0.968 */
     double epsilon;              /**< generalized ICP: covariance regularisation (> 0); default 1e-3 */
@@ -79,7 +81,7 @@ O3D_API o3d_status o3d_icp_options_init(o3d_icp_options_t* opts, uint32_t struct
  * @param residual the residual r
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_robust_kernel_weight(double* out, int32_t kernel, double k, double residual);
+O3D_API o3d_status o3d_robust_kernel_weight(double* out, o3d_robust_kernel kernel, double k, double residual);
 
 
 /**
@@ -183,7 +185,8 @@ O3D_API o3d_status o3d_registration_result_get_inlier_rmse(double* out, const o3
 O3D_API o3d_status o3d_registration_result_get_correspondence_set(int32_t* out, size_t capacity, size_t* out_n,
                                                                   const o3d_registration_result_t* result);
 
-/** Correspondence checkers: prune RANSAC hypotheses early (Open3D's CorrespondenceChecker*). */
+/** Correspondence checkers: prune RANSAC hypotheses early (Open3D's CorrespondenceChecker*; O3D_CHECKER_*). */
+typedef int32_t o3d_correspondence_checker_kind;
 #define O3D_CHECKER_EDGE_LENGTH 0 /**< BasedOnEdgeLength(similarity_threshold in (0, 1]; default 0.9) */
 #define O3D_CHECKER_DISTANCE 1    /**< BasedOnDistance(distance_threshold > 0) */
 #define O3D_CHECKER_NORMAL 2      /**< BasedOnNormal(normal_angle_threshold, radians, > 0): both clouds need normals */
@@ -191,7 +194,7 @@ O3D_API o3d_status o3d_registration_result_get_correspondence_set(int32_t* out, 
 /** A correspondence checker (CorrespondenceChecker*): its kind and threshold; fill with o3d_correspondence_checker_init. */
 typedef struct o3d_correspondence_checker {
     uint32_t struct_size; /**< sizeof(o3d_correspondence_checker_t) */
-    int32_t kind;         /**< O3D_CHECKER_* */
+    o3d_correspondence_checker_kind kind; /**< O3D_CHECKER_* */
     double threshold;     /**< similarity, distance or angle (see the kinds); must be finite and > 0 */
 } o3d_correspondence_checker_t;
 
@@ -205,7 +208,7 @@ typedef struct o3d_correspondence_checker {
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know.
  */
 O3D_API o3d_status o3d_correspondence_checker_init(o3d_correspondence_checker_t* checker, uint32_t struct_size,
-                                                   int32_t kind);
+                                                   o3d_correspondence_checker_kind kind);
 /**
  * @brief Does the hypothesis pass `checker`? `corres` holds `num_corres` (source, target) index pairs;
  * `transformation` (NULL: identity) moves the source. `*out_passed` gets 1 or 0. @see CorrespondenceChecker.Check
@@ -228,15 +231,15 @@ O3D_API o3d_status o3d_correspondence_checker_check(int32_t* out_passed, const o
 /** RANSAC options: estimation, ransac_n and RANSACConvergenceCriteria, seed, threads, progress. */
 typedef struct o3d_ransac_options {
     uint32_t struct_size;     /**< sizeof(o3d_ransac_options_t) */
-    int32_t estimation;       /**< O3D_ESTIMATION_POINT_TO_POINT (default) or POINT_TO_PLANE */
-    int32_t with_scaling;     /**< point-to-point: also estimate a scale; default 0 */
-    int32_t ransac_n;         /**< correspondences drawn per hypothesis, >= 3; default 3 */
-    int32_t max_iteration;    /**< RANSACConvergenceCriteria.max_iteration, >= 0; default 100000 */
+    o3d_estimation estimation; /**< O3D_ESTIMATION_POINT_TO_POINT (default) or POINT_TO_PLANE */
+    o3d_bool with_scaling;    /**< point-to-point: also estimate a scale; default 0 */
+    o3d_count ransac_n;       /**< correspondences drawn per hypothesis, >= 3; default 3 */
+    o3d_count max_iteration;  /**< RANSACConvergenceCriteria.max_iteration; default 100000 */
     double confidence;        /**< RANSACConvergenceCriteria.confidence, in [0, 1]; default 0.999 */
-    int32_t mutual_filter;    /**< feature matching only: keep mutual nearest pairs; default 0 */
-    int32_t use_seed;         /**< 1: draw from `seed`; 0 (default): take a seed from the global generator (o3d_random_seed) */
+    o3d_bool mutual_filter;   /**< feature matching only: keep mutual nearest pairs; default 0 */
+    o3d_bool use_seed;        /**< 1: draw from `seed`, the same result on any thread count; 0 (default): take a seed from the global generator (o3d_random_seed) */
     uint64_t seed;            /**< used when use_seed = 1 */
-    int32_t num_threads;      /**< >= 0; 0 = library default; the result does not depend on it */
+    o3d_count num_threads;    /**< 0 = library default; the result does not depend on it */
     o3d_progress_callback progress; /**< fraction of max_iteration done (jumps to 1 when confident); may be NULL */
     void* user_data;          /**< passed to `progress` */
 } o3d_ransac_options_t;
@@ -307,16 +310,16 @@ O3D_API o3d_status o3d_register_ransac_based_on_correspondence(
 typedef struct o3d_fgr_options {
     uint32_t struct_size;               /**< sizeof(o3d_fgr_options_t) */
     double division_factor;             /**< > 1: mu is divided by it each annealing step; default 1.4 */
-    int32_t use_absolute_scale;         /**< 1: distances in the clouds' units; 0 (default): normalised scale */
-    int32_t decrease_mu;                /**< anneal mu (graduated non-convexity); default 1 */
+    o3d_bool use_absolute_scale;        /**< 1: distances in the clouds' units; 0 (default): normalised scale */
+    o3d_bool decrease_mu;               /**< anneal mu (graduated non-convexity); default 1 */
     double maximum_correspondence_distance; /**< > 0; default 0.025 */
-    int32_t iteration_number;           /**< >= 0; default 64 */
+    o3d_count iteration_number;         /**< iterations; default 64 */
     double tuple_scale;                 /**< in (0, 1]: edge-length similarity of the tuple test; default 0.95 */
-    int32_t maximum_tuple_count;        /**< >= 0; default 1000 */
-    int32_t tuple_test;                 /**< apply the tuple test; default 1 */
-    int32_t use_seed;                   /**< as o3d_ransac_options_t.use_seed (tuples are drawn at random) */
+    o3d_count maximum_tuple_count;      /**< tuples kept at most; default 1000 */
+    o3d_bool tuple_test;                /**< apply the tuple test; default 1 */
+    o3d_bool use_seed;                  /**< 1: draw the random tuples from `seed`, the same result on any thread count; 0 (default): take a seed from the global generator (o3d_random_seed) */
     uint64_t seed; /**< used when use_seed = 1 */
-    int32_t num_threads;                /**< >= 0; 0 = library default; the result does not depend on it */
+    o3d_count num_threads;              /**< 0 = library default; the result does not depend on it */
     o3d_progress_callback progress;     /**< fraction of iteration_number done; may be NULL */
     void* user_data; /**< passed to `progress` */
 } o3d_fgr_options_t;

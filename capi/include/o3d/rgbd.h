@@ -25,7 +25,7 @@ typedef struct o3d_rgbd_options {
     uint32_t struct_size;             /**< sizeof(o3d_rgbd_options_t) */
     double depth_scale;               /**< raw depth units per metre; default 1000 */
     double depth_trunc;               /**< depths at or beyond this (metres) become 0; default 3.0 */
-    int32_t convert_rgb_to_intensity; /**< color → 1-channel float intensity in [0,1]; default 1 */
+    o3d_bool convert_rgb_to_intensity; /**< color → 1-channel float intensity in [0,1]; default 1 */
 } o3d_rgbd_options_t;
 
 /**
@@ -54,6 +54,8 @@ O3D_API o3d_status o3d_rgbd_image_create_from_color_and_depth(o3d_rgbd_image_t**
                                                               const o3d_image_t* depth,
                                                               const o3d_rgbd_options_t* opts);
 
+/** The dataset layouts of RGBDImage.create_from_{redwood,tum,sun,nyu}_format (O3D_RGBD_FORMAT_*). */
+typedef int32_t o3d_rgbd_format;
 #define O3D_RGBD_FORMAT_REDWOOD 0 /**< depth in mm (uint16), truncated at 4 m */
 #define O3D_RGBD_FORMAT_TUM 1     /**< depth scale 5000, truncated at 4 m */
 #define O3D_RGBD_FORMAT_SUN 2     /**< SUN RGB-D: depth bits rotated right by 3, in mm, truncated at 7 m */
@@ -64,13 +66,13 @@ O3D_API o3d_status o3d_rgbd_image_create_from_color_and_depth(o3d_rgbd_image_t**
  * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
  * Ownership: `*out` is the caller's, to free with o3d_rgbd_image_destroy(); left NULL on failure.
  * @param out receives the new handle (NULL on failure)
- * @param format the format name (NULL, "" or "auto": from the file extension)
+ * @param format O3D_RGBD_FORMAT_*
  * @param color the color image
  * @param depth the depth image
  * @param convert_rgb_to_intensity non-zero converts color to 1-channel float intensity
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_rgbd_image_create_from_dataset_format(o3d_rgbd_image_t** out, int32_t format,
+O3D_API o3d_status o3d_rgbd_image_create_from_dataset_format(o3d_rgbd_image_t** out, o3d_rgbd_format format,
                                                              const o3d_image_t* color, const o3d_image_t* depth,
                                                              int32_t convert_rgb_to_intensity);
 /**

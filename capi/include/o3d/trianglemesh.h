@@ -90,6 +90,8 @@ O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trian
  * `which` names the array; rows are counted in items (a point, a line, a descriptor), never in
  * values. Copy-outs take the caller's capacity in rows and always report the rows needed;
  * views are borrowed, valid until the next mutating call on the handle or its destruction. */
+/** The arrays of a triangle mesh (O3D_MESH_*). */
+typedef int32_t o3d_mesh_array;
 #define O3D_MESH_VERTICES 0 /**< N x 3 float64 */
 #define O3D_MESH_VERTEX_NORMALS 1 /**< N x 3 */
 #define O3D_MESH_VERTEX_COLORS 2 /**< N x 3, RGB in [0,1] */
@@ -107,7 +109,7 @@ O3D_API o3d_status o3d_trianglemesh_num_triangles(size_t* out_n, const o3d_trian
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_trianglemesh_has_array(int32_t* out, const o3d_trianglemesh_t* mesh, int32_t which);
+O3D_API o3d_status o3d_trianglemesh_has_array(int32_t* out, const o3d_trianglemesh_t* mesh, o3d_mesh_array which);
 /**
  * @brief Rows and columns (values per row) of array `which`: e.g. N x 3 for points, num x dimension for a
  * feature.
@@ -119,7 +121,7 @@ O3D_API o3d_status o3d_trianglemesh_has_array(int32_t* out, const o3d_triangleme
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_trianglemesh_array_shape(size_t* out_rows, size_t* out_cols, const o3d_trianglemesh_t* mesh, int32_t which);
+O3D_API o3d_status o3d_trianglemesh_array_shape(size_t* out_rows, size_t* out_cols, const o3d_trianglemesh_t* mesh, o3d_mesh_array which);
 /**
  * @brief Replace array `which` with `rows` rows of `data`, copied once (`data` may be NULL when rows == 0).
  *
@@ -131,7 +133,7 @@ O3D_API o3d_status o3d_trianglemesh_array_shape(size_t* out_rows, size_t* out_co
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
  *   unknown `which` (or one of the other type).
  */
-O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t which, const double* data, size_t rows);
+O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, o3d_mesh_array which, const double* data, size_t rows);
 /**
  * @brief As o3d_trianglemesh_set_array from float32 values, converted in the one copy.
  *
@@ -143,7 +145,7 @@ O3D_API o3d_status o3d_trianglemesh_set_array(o3d_trianglemesh_t* mesh, int32_t 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0, an
  *   unknown `which` (or one of the other type) or an array that takes no float32.
  */
-O3D_API o3d_status o3d_trianglemesh_set_array_f32(o3d_trianglemesh_t* mesh, int32_t which, const float* data, size_t rows);
+O3D_API o3d_status o3d_trianglemesh_set_array_f32(o3d_trianglemesh_t* mesh, o3d_mesh_array which, const float* data, size_t rows);
 /**
  * @brief Copy array `which` into `out`, which holds `capacity` rows; `*out_rows` always gets the rows
  * needed. `out` NULL only reports them.
@@ -158,7 +160,7 @@ O3D_API o3d_status o3d_trianglemesh_set_array_f32(o3d_trianglemesh_t* mesh, int3
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_trianglemesh_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_trianglemesh_t* mesh,
-                                              int32_t which);
+                                              o3d_mesh_array which);
 /**
  * @brief Borrowed read-only view of array `which` (`*out_data` NULL when empty).
  *
@@ -172,7 +174,7 @@ O3D_API o3d_status o3d_trianglemesh_get_array(double* out, size_t capacity, size
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_array_view(const double** out_data, size_t* out_rows, const o3d_trianglemesh_t* mesh,
-                                               int32_t which);
+                                               o3d_mesh_array which);
 /**
  * @brief Borrowed writable view of array `which`: as o3d_trianglemesh_array_view; writing through it is a mutating
  * call.
@@ -187,7 +189,7 @@ O3D_API o3d_status o3d_trianglemesh_array_view(const double** out_data, size_t* 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_array_mutable_view(double** out_data, size_t* out_rows, o3d_trianglemesh_t* mesh,
-                                                       int32_t which);
+                                                       o3d_mesh_array which);
 /**
  * @brief Replace int32 array `which` with `rows` rows of `data` (copied once), as o3d_trianglemesh_set_array.
  *
@@ -199,7 +201,7 @@ O3D_API o3d_status o3d_trianglemesh_array_mutable_view(double** out_data, size_t
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, an unknown `which`, NULL `data` with rows > 0 or an
  *   unknown `which` (or one of the other type).
  */
-O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, int32_t which, const int32_t* data, size_t rows);
+O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, o3d_mesh_array which, const int32_t* data, size_t rows);
 /**
  * @brief Copy int32 array `which` out, with the copy-out rules of o3d_trianglemesh_get_array.
  *
@@ -213,7 +215,7 @@ O3D_API o3d_status o3d_trianglemesh_set_index_array(o3d_trianglemesh_t* mesh, in
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_trianglemesh_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
-                                                    const o3d_trianglemesh_t* mesh, int32_t which);
+                                                    const o3d_trianglemesh_t* mesh, o3d_mesh_array which);
 /**
  * @brief Borrowed read-only view of int32 array `which` (ownership as o3d_trianglemesh_array_view).
  *
@@ -227,7 +229,7 @@ O3D_API o3d_status o3d_trianglemesh_get_index_array(int32_t* out, size_t capacit
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_index_array_view(const int32_t** out_data, size_t* out_rows,
-                                                     const o3d_trianglemesh_t* mesh, int32_t which);
+                                                     const o3d_trianglemesh_t* mesh, o3d_mesh_array which);
 /**
  * @brief Borrowed writable view of int32 array `which`; writing through it is a mutating call.
  *
@@ -241,7 +243,7 @@ O3D_API o3d_status o3d_trianglemesh_index_array_view(const int32_t** out_data, s
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL handle, `out_data` or `out_rows` or an unknown `which`.
  */
 O3D_API o3d_status o3d_trianglemesh_index_array_mutable_view(int32_t** out_data, size_t* out_rows,
-                                                             o3d_trianglemesh_t* mesh, int32_t which);
+                                                             o3d_trianglemesh_t* mesh, o3d_mesh_array which);
 
 /**
  * @brief Number of texture images.
@@ -597,6 +599,8 @@ O3D_API o3d_status o3d_trianglemesh_sample_points_poisson_disk(o3d_pointcloud_t*
                                                                size_t number_of_points, double init_factor,
                                                                int32_t use_triangle_normal, uint64_t seed);
 
+/** How vertex clustering places a cluster's vertex (O3D_SIMPLIFICATION_*). */
+typedef int32_t o3d_simplification_contraction;
 #define O3D_SIMPLIFICATION_AVERAGE 0 /**< vertex clustering: cluster vertex = mean */
 #define O3D_SIMPLIFICATION_QUADRIC 1 /**< vertex clustering: cluster vertex minimises the quadric error */
 /**
@@ -612,7 +616,7 @@ O3D_API o3d_status o3d_trianglemesh_sample_points_poisson_disk(o3d_pointcloud_t*
  */
 O3D_API o3d_status o3d_trianglemesh_simplify_vertex_clustering(o3d_trianglemesh_t** out,
                                                                const o3d_trianglemesh_t* mesh, double voxel_size,
-                                                               int32_t contraction);
+                                                               o3d_simplification_contraction contraction);
 /**
  * @brief Quadric edge-collapse decimation (Garland & Heckbert 1997) down to `target_number_of_triangles`,
  * stopping early when the cheapest collapse costs more than `maximum_error` (INFINITY: no limit);
@@ -632,6 +636,8 @@ O3D_API o3d_status o3d_trianglemesh_simplify_quadric_decimation(o3d_trianglemesh
                                                                 size_t target_number_of_triangles,
                                                                 double maximum_error, double boundary_weight);
 
+/** Which vertex attributes the smoothing filters change (O3D_FILTER_SCOPE_*). */
+typedef int32_t o3d_filter_scope;
 #define O3D_FILTER_SCOPE_ALL 0    /**< positions, normals and colors */
 #define O3D_FILTER_SCOPE_COLOR 1 /**< colors only */
 #define O3D_FILTER_SCOPE_NORMAL 2 /**< normals only */
@@ -648,7 +654,7 @@ O3D_API o3d_status o3d_trianglemesh_simplify_quadric_decimation(o3d_trianglemesh
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_simple(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
-                                                         int32_t number_of_iterations, int32_t filter_scope);
+                                                         int32_t number_of_iterations, o3d_filter_scope filter_scope);
 /**
  * @brief Laplacian smoothing v += lambda * (weighted mean of neighbours - v), neighbours weighted by inverse
  * distance as in Open3D (default lambda 0.5).
@@ -665,7 +671,7 @@ O3D_API o3d_status o3d_trianglemesh_filter_smooth_simple(o3d_trianglemesh_t** ou
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_laplacian(o3d_trianglemesh_t** out,
                                                             const o3d_trianglemesh_t* mesh,
                                                             int32_t number_of_iterations, double lambda_filter,
-                                                            int32_t filter_scope);
+                                                            o3d_filter_scope filter_scope);
 /**
  * @brief Taubin smoothing: alternating Laplacian steps with lambda and mu (defaults 0.5, -0.53).
  *
@@ -681,7 +687,7 @@ O3D_API o3d_status o3d_trianglemesh_filter_smooth_laplacian(o3d_trianglemesh_t**
  */
 O3D_API o3d_status o3d_trianglemesh_filter_smooth_taubin(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                                          int32_t number_of_iterations, double lambda_filter,
-                                                         double mu, int32_t filter_scope);
+                                                         double mu, o3d_filter_scope filter_scope);
 /**
  * @brief Split every triangle into four at its edge midpoints, `number_of_iterations` times.
  *
@@ -821,9 +827,9 @@ O3D_API o3d_status o3d_trianglemesh_create_coordinate_frame(o3d_trianglemesh_t**
 /** TriangleMesh.create_mobius keyword arguments. */
 typedef struct o3d_mobius_options {
     uint32_t struct_size; /**< sizeof(o3d_mobius_options_t) */
-    int32_t length_split; /**< columns along the band, >= 3; default 70 */
-    int32_t width_split;  /**< vertices across the band, >= 2; default 15 */
-    int32_t twists;       /**< half turns along the band, >= 0 (odd: a Moebius strip); default 1 */
+    o3d_count length_split; /**< columns along the band, >= 3; default 70 */
+    o3d_count width_split; /**< vertices across the band, >= 2; default 15 */
+    o3d_count twists;     /**< half turns along the band, >= 0 (odd: a Moebius strip); default 1 */
     double radius;        /**< radius of the band's centre circle, > 0; default 1 */
     double flatness;      /**< factor on z (0 flattens the band into the plane); default 1 */
     double width;         /**< width of the band, > 0; default 1 */

@@ -31,16 +31,20 @@
 
 O3D_BEGIN_DECL
 
-/** Where the renderer's OpenGL context comes from. */
+/** Where the renderer's OpenGL context comes from (O3D_RENDER_BACKEND_*). */
+typedef int32_t o3d_render_backend;
 #define O3D_RENDER_BACKEND_AUTO 0 /**< EGL when it works, else a hidden GLFW window */
 #define O3D_RENDER_BACKEND_EGL 1  /**< EGL only (headless) */
 #define O3D_RENDER_BACKEND_GLFW 2 /**< a hidden GLFW window only (needs a display) */
 
-/** RenderOption.mesh_shade_option (Open3D's MeshShadeOption). */
+/** RenderOption.mesh_shade_option (Open3D's MeshShadeOption; O3D_MESH_SHADE_*). */
+typedef int32_t o3d_mesh_shade_option;
 #define O3D_MESH_SHADE_FLAT 0   /**< FlatShade: one normal per triangle */
 #define O3D_MESH_SHADE_SMOOTH 1 /**< SmoothShade: the vertex normals (flat where the mesh has none) */
 
-/** RenderOption.point_color_option and mesh_color_option (Open3D's PointColorOption / MeshColorOption). */
+/** RenderOption.point_color_option and mesh_color_option (Open3D's PointColorOption / MeshColorOption;
+ *  O3D_COLOR_OPTION_*). */
+typedef int32_t o3d_color_option;
 #define O3D_COLOR_OPTION_DEFAULT 0 /**< points: their colors, else a Jet map of z; meshes: default_mesh_color */
 #define O3D_COLOR_OPTION_COLOR 1   /**< their colors, else as DEFAULT */
 #define O3D_COLOR_OPTION_X 2       /**< Jet color map of x over the scene's box */
@@ -48,7 +52,8 @@ O3D_BEGIN_DECL
 #define O3D_COLOR_OPTION_Z 4       /**< Jet color map of z over the scene's box */
 #define O3D_COLOR_OPTION_NORMAL 9  /**< normal * 0.5 + 0.5 (black without normals) */
 
-/** Per-geometry material (a subset of Open3D's rendering.MaterialRecord). */
+/** A material's shader (O3D_SHADER_*). */
+typedef int32_t o3d_shader;
 #define O3D_SHADER_DEFAULT_LIT 0   /**< "defaultLit": the RenderOption's lights (when light_on) */
 #define O3D_SHADER_DEFAULT_UNLIT 1 /**< "defaultUnlit": colors as they are, no lighting */
 
@@ -63,20 +68,20 @@ typedef struct o3d_render_option {
     double background_color[3];      /**< RGB in [0, 1]; default white */
     double point_size;               /**< pixels, in [1, 25]; default 5 */
     double line_width;               /**< pixels, in [1, 10]; default 1 */
-    int32_t light_on;                /**< default 1 */
-    int32_t point_show_normal;       /**< draw each point's normal as a line; default 0 */
-    int32_t mesh_show_wireframe;     /**< draw triangle edges over the faces; default 0 */
-    int32_t mesh_show_back_face;     /**< draw triangles seen from behind; default 0 (culled) */
-    int32_t mesh_shade_option;       /**< O3D_MESH_SHADE_*; default FLAT */
-    int32_t point_color_option;      /**< O3D_COLOR_OPTION_*; default DEFAULT */
-    int32_t mesh_color_option;       /**< O3D_COLOR_OPTION_*; default COLOR */
-    double default_mesh_color[3];    /**< default 0.7 gray */
-    double light_ambient_color[3];   /**< default black */
-    double light_position[12];       /**< 4 lights, relative to the box (see above); default (0,0,2) twice, (0,0,-2) twice */
-    double light_color[12];          /**< 4 RGB; default white */
-    double light_diffuse_power[4];   /**< default 0.66 */
-    double light_specular_power[4];  /**< default 0.2 */
-    double light_specular_shininess[4]; /**< default 100 */
+    o3d_bool light_on;               /**< light lit materials with the four Phong lights; default 1 */
+    o3d_bool point_show_normal;      /**< draw each point's normal as a line; default 0 */
+    o3d_bool mesh_show_wireframe;    /**< draw triangle edges over the faces; default 0 */
+    o3d_bool mesh_show_back_face;    /**< draw triangles seen from behind; default 0 (culled) */
+    o3d_mesh_shade_option mesh_shade_option; /**< O3D_MESH_SHADE_*; default FLAT */
+    o3d_color_option point_color_option; /**< O3D_COLOR_OPTION_*; default DEFAULT */
+    o3d_color_option mesh_color_option; /**< O3D_COLOR_OPTION_*; default COLOR */
+    double default_mesh_color[3];    /**< RGB of meshes without colors (in Open3D's JSON, not its Python API); default 0.7 gray */
+    double light_ambient_color[3];   /**< RGB of the ambient light (in Open3D's JSON, not its Python API); default black */
+    double light_position[12];       /**< 4 lights, row-major 4x3: (right, up, front) relative to the box (see above); default (0,0,2) twice, (0,0,-2) twice */
+    double light_color[12];          /**< 4 lights, row-major 4x3 RGB; default white */
+    double light_diffuse_power[4];   /**< per light; default 0.66 */
+    double light_specular_power[4];  /**< per light; default 0.2 */
+    double light_specular_shininess[4]; /**< per light; default 100 */
 } o3d_render_option_t;
 
 /**
@@ -114,7 +119,7 @@ O3D_API o3d_status o3d_render_option_save_json(const char* path, const o3d_rende
 /** A geometry's material: how it is shaded, and its size and tint. */
 typedef struct o3d_render_material {
     uint32_t struct_size;  /**< sizeof(o3d_render_material_t) */
-    int32_t shader;        /**< O3D_SHADER_*; default DEFAULT_LIT */
+    o3d_shader shader;     /**< O3D_SHADER_*; default DEFAULT_LIT */
     double base_color[4];  /**< multiplies the geometry's colors (RGBA; alpha unused); default 1,1,1,1 */
     double point_size;     /**< pixels; 0 (default) = the RenderOption's */
     double line_width;     /**< pixels; 0 (default) = the RenderOption's */
@@ -144,7 +149,7 @@ O3D_API o3d_status o3d_render_material_init(o3d_render_material_t* material, uin
  *   answered).
  */
 O3D_API o3d_status o3d_offscreen_renderer_create(o3d_offscreen_renderer_t** out, int32_t width, int32_t height,
-                                                 int32_t backend);
+                                                 o3d_render_backend backend);
 /**
  * @brief Destroy, with its GPU resources. NULL is a no-op.
  *
@@ -160,7 +165,7 @@ O3D_API void o3d_offscreen_renderer_destroy(o3d_offscreen_renderer_t* renderer);
  * @param renderer the renderer
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_offscreen_renderer_get_backend(int32_t* out, const o3d_offscreen_renderer_t* renderer);
+O3D_API o3d_status o3d_offscreen_renderer_get_backend(o3d_render_backend* out, const o3d_offscreen_renderer_t* renderer);
 /**
  * @brief The image size.
  *

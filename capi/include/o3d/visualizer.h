@@ -30,9 +30,18 @@
 
 O3D_BEGIN_DECL
 
+/** What a key or a mouse button did (O3D_KEY_ACTION_*). */
+typedef int32_t o3d_key_action;
 #define O3D_KEY_ACTION_RELEASE 0 /**< a key or button went up */
 #define O3D_KEY_ACTION_PRESS 1   /**< a key or button went down */
 #define O3D_KEY_ACTION_REPEAT 2  /**< a key is held down */
+
+/** A mouse button (O3D_MOUSE_BUTTON_*). */
+typedef int32_t o3d_mouse_button;
+#define O3D_MOUSE_BUTTON_LEFT 0   /**< left: a drag rotates; Shift + click picks when editing */
+#define O3D_MOUSE_BUTTON_RIGHT 1  /**< right: Shift + click drops the last pick when editing */
+#define O3D_MOUSE_BUTTON_MIDDLE 2 /**< middle: a drag translates */
+
 #define O3D_KEY_MOD_SHIFT 1      /**< Shift was held */
 #define O3D_KEY_MOD_CONTROL 2    /**< Control was held */
 #define O3D_KEY_MOD_ALT 4        /**< Alt was held */
@@ -43,9 +52,6 @@ O3D_BEGIN_DECL
 #define O3D_KEY_LEFT 263         /**< arrow left */
 #define O3D_KEY_DOWN 264         /**< arrow down */
 #define O3D_KEY_UP 265           /**< arrow up */
-#define O3D_MOUSE_BUTTON_LEFT 0   /**< left mouse button */
-#define O3D_MOUSE_BUTTON_RIGHT 1  /**< right mouse button */
-#define O3D_MOUSE_BUTTON_MIDDLE 2 /**< middle mouse button */
 
 /**
  * @brief Called once per loop of o3d_visualizer_run (Open3D's animation callback). Return non-zero when the
@@ -56,7 +62,8 @@ typedef int32_t (*o3d_visualizer_animation_callback)(o3d_visualizer_t* vis, void
  * @brief Called for a key (Open3D's key callback, or key action callback with `action` and `mods`). Return
  * non-zero when the geometry or the view changed.
  */
-typedef int32_t (*o3d_visualizer_key_callback)(o3d_visualizer_t* vis, int32_t action, int32_t mods, void* user_data);
+typedef int32_t (*o3d_visualizer_key_callback)(o3d_visualizer_t* vis, o3d_key_action action, int32_t mods,
+                                               void* user_data);
 
 /**
  * @brief A visualizer without a window yet.
@@ -68,7 +75,7 @@ typedef int32_t (*o3d_visualizer_key_callback)(o3d_visualizer_t* vis, int32_t ac
  *   added, Shift + right click drops the last pick (o3d_visualizer_get_picked_points)
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `out`.
  */
-O3D_API o3d_status o3d_visualizer_create(o3d_visualizer_t** out, int32_t editing);
+O3D_API o3d_status o3d_visualizer_create(o3d_visualizer_t** out, o3d_bool editing);
 /**
  * @brief Close the window (if any) and free the visualizer. NULL is a no-op.
  *
@@ -89,7 +96,7 @@ O3D_API void o3d_visualizer_destroy(o3d_visualizer_t* vis);
  *   O3D_ERROR_UNSUPPORTED when no window or OpenGL 3.3 context can be had (the message says why).
  */
 O3D_API o3d_status o3d_visualizer_create_window(o3d_visualizer_t* vis, const char* window_name, int32_t width,
-                                                int32_t height, int32_t left, int32_t top, int32_t visible);
+                                                int32_t height, int32_t left, int32_t top, o3d_bool visible);
 /**
  * @brief Visualizer.destroy_window: close the window and forget the scene (no-op without a window).
  *
@@ -109,7 +116,7 @@ O3D_API o3d_status o3d_visualizer_destroy_window(o3d_visualizer_t* vis);
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an empty name or no window.
  */
 O3D_API o3d_status o3d_visualizer_add_pointcloud(o3d_visualizer_t* vis, const char* name, const o3d_pointcloud_t* cloud,
-                                                 int32_t reset_bounding_box);
+                                                 o3d_bool reset_bounding_box);
 /**
  * @brief o3d_visualizer_add_pointcloud for a triangle mesh.
  *
@@ -122,7 +129,7 @@ O3D_API o3d_status o3d_visualizer_add_pointcloud(o3d_visualizer_t* vis, const ch
  *   index out of range.
  */
 O3D_API o3d_status o3d_visualizer_add_trianglemesh(o3d_visualizer_t* vis, const char* name,
-                                                   const o3d_trianglemesh_t* mesh, int32_t reset_bounding_box);
+                                                   const o3d_trianglemesh_t* mesh, o3d_bool reset_bounding_box);
 /**
  * @brief o3d_visualizer_add_pointcloud for a line set.
  *
@@ -135,7 +142,7 @@ O3D_API o3d_status o3d_visualizer_add_trianglemesh(o3d_visualizer_t* vis, const 
  *   out of range.
  */
 O3D_API o3d_status o3d_visualizer_add_lineset(o3d_visualizer_t* vis, const char* name, const o3d_lineset_t* lineset,
-                                              int32_t reset_bounding_box);
+                                              o3d_bool reset_bounding_box);
 /**
  * @brief o3d_visualizer_add_pointcloud for a voxel grid (drawn as cubes).
  *
@@ -147,7 +154,7 @@ O3D_API o3d_status o3d_visualizer_add_lineset(o3d_visualizer_t* vis, const char*
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an empty name or no window.
  */
 O3D_API o3d_status o3d_visualizer_add_voxelgrid(o3d_visualizer_t* vis, const char* name, const o3d_voxelgrid_t* grid,
-                                                int32_t reset_bounding_box);
+                                                o3d_bool reset_bounding_box);
 /**
  * @brief o3d_visualizer_add_pointcloud for an image: shown flat under the 3D geometry, scaled to fit the
  * window with its aspect ratio kept and centred (Open3D's legacy viewer). 1, 3 or 4 channels of uint8;
@@ -163,7 +170,7 @@ O3D_API o3d_status o3d_visualizer_add_voxelgrid(o3d_visualizer_t* vis, const cha
  *   another pixel format.
  */
 O3D_API o3d_status o3d_visualizer_add_image(o3d_visualizer_t* vis, const char* name, const o3d_image_t* image,
-                                            int32_t reset_bounding_box);
+                                            o3d_bool reset_bounding_box);
 /**
  * @brief Visualizer.remove_geometry.
  *
@@ -173,7 +180,7 @@ O3D_API o3d_status o3d_visualizer_add_image(o3d_visualizer_t* vis, const char* n
  * @param reset_bounding_box non-zero: the view box is computed again from what is left and the view reset
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no window, or no geometry of that name.
  */
-O3D_API o3d_status o3d_visualizer_remove_geometry(o3d_visualizer_t* vis, const char* name, int32_t reset_bounding_box);
+O3D_API o3d_status o3d_visualizer_remove_geometry(o3d_visualizer_t* vis, const char* name, o3d_bool reset_bounding_box);
 /**
  * @brief Visualizer.clear_geometries.
  *
@@ -307,7 +314,7 @@ O3D_API o3d_status o3d_visualizer_register_key_action_callback(o3d_visualizer_t*
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL `vis` or an unknown action; what the key's
  *   action raised (O3D_ERROR_IO when P cannot write its files; O3D_ERROR_CANCELLED from a callback).
  */
-O3D_API o3d_status o3d_visualizer_send_key(o3d_visualizer_t* vis, int32_t key, int32_t action, int32_t mods);
+O3D_API o3d_status o3d_visualizer_send_key(o3d_visualizer_t* vis, int32_t key, o3d_key_action action, int32_t mods);
 /**
  * @brief Deliver a cursor move (window pixels): a drag with the left button rotates, with Ctrl + left or
  * the middle button translates.
@@ -328,8 +335,8 @@ O3D_API o3d_status o3d_visualizer_send_mouse_move(o3d_visualizer_t* vis, double 
  * @param mods O3D_KEY_MOD_* bits
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `vis`, a button outside 0..7 or an unknown action.
  */
-O3D_API o3d_status o3d_visualizer_send_mouse_button(o3d_visualizer_t* vis, int32_t button, int32_t action,
-                                                    int32_t mods);
+O3D_API o3d_status o3d_visualizer_send_mouse_button(o3d_visualizer_t* vis, o3d_mouse_button button,
+                                                    o3d_key_action action, int32_t mods);
 /**
  * @brief Deliver a wheel turn: the view's zoom changes by `dy` steps (ViewControl.scale).
  *
@@ -350,7 +357,7 @@ O3D_API o3d_status o3d_visualizer_send_scroll(o3d_visualizer_t* vis, double dx, 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or no window.
  */
 O3D_API o3d_status o3d_visualizer_capture_screen_float_buffer(o3d_image_t** out, o3d_visualizer_t* vis,
-                                                              int32_t do_render);
+                                                              o3d_bool do_render);
 /**
  * @brief Visualizer.capture_screen_image: the frame as an 8-bit RGB image file (PNG or JPEG by extension).
  *
@@ -361,7 +368,7 @@ O3D_API o3d_status o3d_visualizer_capture_screen_float_buffer(o3d_image_t** out,
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or no window; O3D_ERROR_IO when the file
  *   cannot be written; O3D_ERROR_UNSUPPORTED for an unknown extension.
  */
-O3D_API o3d_status o3d_visualizer_capture_screen_image(o3d_visualizer_t* vis, const char* path, int32_t do_render);
+O3D_API o3d_status o3d_visualizer_capture_screen_image(o3d_visualizer_t* vis, const char* path, o3d_bool do_render);
 /**
  * @brief Visualizer.capture_depth_float_buffer: float32 depth in metres along the optical axis, 0 where
  * nothing was drawn.
@@ -374,7 +381,7 @@ O3D_API o3d_status o3d_visualizer_capture_screen_image(o3d_visualizer_t* vis, co
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or no window.
  */
 O3D_API o3d_status o3d_visualizer_capture_depth_float_buffer(o3d_image_t** out, o3d_visualizer_t* vis,
-                                                             int32_t do_render);
+                                                             o3d_bool do_render);
 /**
  * @brief Visualizer.capture_depth_image: depth * `depth_scale` as a 16-bit PNG (Open3D's default scale 1000:
  * millimetres), clamped to 65535.
@@ -387,7 +394,7 @@ O3D_API o3d_status o3d_visualizer_capture_depth_float_buffer(o3d_image_t** out, 
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no window or a bad scale; O3D_ERROR_IO
  *   when the file cannot be written.
  */
-O3D_API o3d_status o3d_visualizer_capture_depth_image(o3d_visualizer_t* vis, const char* path, int32_t do_render,
+O3D_API o3d_status o3d_visualizer_capture_depth_image(o3d_visualizer_t* vis, const char* path, o3d_bool do_render,
                                                       double depth_scale);
 /**
  * @brief VisualizerWithEditing.get_picked_points: vertex indices of the first geometry added, in pick order.
@@ -547,7 +554,7 @@ O3D_API o3d_status o3d_visualizer_set_view_status(o3d_visualizer_t* vis, const c
  *   `progress` stopped it.
  */
 O3D_API o3d_status o3d_visualizer_play_view_trajectory(o3d_visualizer_t* vis, const char* trajectory_path,
-                                                       const char* capture_dir, int32_t capture_depth,
+                                                       const char* capture_dir, o3d_bool capture_depth,
                                                        o3d_progress_callback progress, void* user_data);
 
 O3D_END_DECL

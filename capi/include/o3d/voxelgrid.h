@@ -98,6 +98,8 @@ O3D_API o3d_status o3d_voxelgrid_get_origin(double out[3], const o3d_voxelgrid_t
 O3D_API o3d_status o3d_voxelgrid_num_voxels(size_t* out_n, const o3d_voxelgrid_t* grid);
 /* ---- Arrays: as every geometry's (docs/conventions.md, "Arrays"); a voxel grid is read-only here,
  * so it has the copy-outs only. Rows are voxels, sorted by grid index (the same order in both). */
+/** The arrays of a voxel grid (O3D_VOXELGRID_*). */
+typedef int32_t o3d_voxelgrid_array;
 #define O3D_VOXELGRID_COLORS 0       /**< N x 3 float64 RGB in [0,1] */
 #define O3D_VOXELGRID_GRID_INDEX 100 /**< N x 3 int32 grid indices */
 /**
@@ -109,7 +111,7 @@ O3D_API o3d_status o3d_voxelgrid_num_voxels(size_t* out_n, const o3d_voxelgrid_t
  * @param which the array: one of this header's `which` constants
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
-O3D_API o3d_status o3d_voxelgrid_has_array(int32_t* out, const o3d_voxelgrid_t* grid, int32_t which);
+O3D_API o3d_status o3d_voxelgrid_has_array(int32_t* out, const o3d_voxelgrid_t* grid, o3d_voxelgrid_array which);
 /**
  * @brief Rows (voxels) and columns (3) of array `which`.
  *
@@ -121,7 +123,7 @@ O3D_API o3d_status o3d_voxelgrid_has_array(int32_t* out, const o3d_voxelgrid_t* 
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an unknown `which`.
  */
 O3D_API o3d_status o3d_voxelgrid_array_shape(size_t* out_rows, size_t* out_cols, const o3d_voxelgrid_t* grid,
-                                             int32_t which);
+                                             o3d_voxelgrid_array which);
 /**
  * @brief Copy float64 array `which` into `out` (`capacity` rows); `*out_rows` always gets the rows needed,
  * `out` NULL only reports them. @see VoxelGrid.get_voxels
@@ -136,7 +138,7 @@ O3D_API o3d_status o3d_voxelgrid_array_shape(size_t* out_rows, size_t* out_cols,
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_voxelgrid_get_array(double* out, size_t capacity, size_t* out_rows, const o3d_voxelgrid_t* grid,
-                                           int32_t which);
+                                           o3d_voxelgrid_array which);
 /**
  * @brief Copy int32 array `which` out, with the rules of o3d_voxelgrid_get_array.
  *
@@ -150,7 +152,7 @@ O3D_API o3d_status o3d_voxelgrid_get_array(double* out, size_t capacity, size_t*
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
 O3D_API o3d_status o3d_voxelgrid_get_index_array(int32_t* out, size_t capacity, size_t* out_rows,
-                                                 const o3d_voxelgrid_t* grid, int32_t which);
+                                                 const o3d_voxelgrid_t* grid, o3d_voxelgrid_array which);
 /**
  * @brief Grid index of the cell containing `point` (occupied or not). @see VoxelGrid.get_voxel
  *

@@ -8,6 +8,7 @@
 #include "o3d/camera.h"
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
@@ -15,11 +16,7 @@ namespace o3dpp {
 
 /// @brief o3d.camera.PinholeCameraIntrinsic: the frozen C struct, so it passes straight through.
 struct PinholeIntrinsic : o3d_pinhole_intrinsic_t {
-    enum class Preset : int32_t {
-        PrimeSenseDefault = O3D_INTRINSIC_PRIMESENSE_DEFAULT,
-        Kinect2DepthDefault = O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
-        Kinect2ColorDefault = O3D_INTRINSIC_KINECT2_COLOR_DEFAULT
-    };
+    using Preset = IntrinsicPreset;
     PinholeIntrinsic() : o3d_pinhole_intrinsic_t{0, 0, 0.0, 0.0, 0.0, 0.0} {}
     PinholeIntrinsic(int32_t w, int32_t h, double fx_, double fy_, double cx_, double cy_)
         : o3d_pinhole_intrinsic_t{w, h, fx_, fy_, cx_, cy_} {}

@@ -13,6 +13,7 @@
 #include "o3d/common.h"
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
@@ -23,13 +24,6 @@ inline std::string version() { return o3d_version(); }
 inline int version_major() noexcept { return o3d_version_major(); }
 inline int version_minor() noexcept { return o3d_version_minor(); }
 inline int version_patch() noexcept { return o3d_version_patch(); }
-
-enum class LogLevel : int32_t {
-    Error = O3D_LOG_ERROR,
-    Warning = O3D_LOG_WARNING,
-    Info = O3D_LOG_INFO,
-    Debug = O3D_LOG_DEBUG
-};
 
 /// @brief Show messages at `level` and more severe.
 inline void set_verbosity_level(LogLevel level) { check(o3d_set_verbosity_level(static_cast<int32_t>(level))); }

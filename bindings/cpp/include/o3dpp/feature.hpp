@@ -12,14 +12,13 @@
 #include "o3d/io.h"
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
 
-/// @brief The array of a feature: num x dimension float64, a descriptor per row.
-enum class FeatureArray : int32_t { Data = O3D_FEATURE_DATA };
 namespace detail {
 using FeatureArrayFns =
     ArrayFns<&o3d_feature_has_array, &o3d_feature_array_shape, &o3d_feature_get_array, &o3d_feature_array_view,

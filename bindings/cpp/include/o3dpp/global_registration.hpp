@@ -12,7 +12,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/feature.hpp"
-#include "o3dpp/options.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/registration.hpp"
 #include "o3dpp/span.hpp"
@@ -25,11 +25,7 @@ using Correspondences = std::vector<std::array<int32_t, 2>>;
 /// @brief Prunes RANSAC hypotheses early (Open3D's CorrespondenceChecker*). The threshold must be
 /// finite and positive; without one, the library's default for the kind (o3d_correspondence_checker_init).
 struct CorrespondenceChecker {
-    enum class Kind : int32_t {
-        EdgeLength = O3D_CHECKER_EDGE_LENGTH,  ///< similarity_threshold in (0, 1]
-        Distance = O3D_CHECKER_DISTANCE,       ///< distance_threshold
-        Normal = O3D_CHECKER_NORMAL            ///< normal_angle_threshold (radians); both clouds need normals
-    };
+    using Kind = CorrespondenceCheckerKind;
     Kind kind;
     double threshold;
 
@@ -77,68 +73,6 @@ private:
 
 /// @brief Seed the global generator RANSAC and FGR draw from when given no seed. @see o3d.utility.random.seed
 inline void random_seed(uint64_t seed) { check(o3d_random_seed(seed)); }
-
-/// @brief RANSAC options (estimation, ransac_n, RANSACConvergenceCriteria, seed); defaults from
-/// o3d_ransac_options_init.
-struct RansacOptions : COptions<RansacOptions, o3d_ransac_options_t, &o3d_ransac_options_init> {
-    Estimation estimation;  ///< PointToPoint or PointToPlane
-    bool with_scaling;
-    int ransac_n;
-    int max_iteration;
-    double confidence;
-    bool mutual_filter;  ///< feature matching only
-    /// @brief Draw from this seed; empty: take one from the global generator (random_seed()).
-    /// The same seed gives the same result on any thread count.
-    std::optional<uint64_t> seed;
-    int num_threads;
-    /// @brief Fraction of max_iteration done (1 when confident); return false to cancel. An
-    /// exception it throws cancels the call and is rethrown.
-    ProgressCallback progress;
-
-    RansacOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.estimation, c.estimation);
-        f(s.with_scaling, c.with_scaling);
-        f(s.ransac_n, c.ransac_n);
-        f(s.max_iteration, c.max_iteration);
-        f(s.confidence, c.confidence);
-        f(s.mutual_filter, c.mutual_filter);
-        f(s.seed, c.use_seed, c.seed);
-        f(s.num_threads, c.num_threads);
-    }
-};
-
-/// @brief FastGlobalRegistrationOption plus seed, threads and progress; defaults from o3d_fgr_options_init.
-struct FgrOptions : COptions<FgrOptions, o3d_fgr_options_t, &o3d_fgr_options_init> {
-    double division_factor;
-    bool use_absolute_scale;
-    bool decrease_mu;
-    double maximum_correspondence_distance;
-    int iteration_number;
-    double tuple_scale;
-    int maximum_tuple_count;
-    bool tuple_test;
-    std::optional<uint64_t> seed;  ///< as RansacOptions::seed
-    int num_threads;
-    /// @brief Fraction of iteration_number done; return false to cancel.
-    ProgressCallback progress;
-
-    FgrOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.division_factor, c.division_factor);
-        f(s.use_absolute_scale, c.use_absolute_scale);
-        f(s.decrease_mu, c.decrease_mu);
-        f(s.maximum_correspondence_distance, c.maximum_correspondence_distance);
-        f(s.iteration_number, c.iteration_number);
-        f(s.tuple_scale, c.tuple_scale);
-        f(s.maximum_tuple_count, c.maximum_tuple_count);
-        f(s.tuple_test, c.tuple_test);
-        f(s.seed, c.use_seed, c.seed);
-        f(s.num_threads, c.num_threads);
-    }
-};
 
 namespace detail {
 inline std::vector<o3d_correspondence_checker_t> to_c(const std::vector<CorrespondenceChecker>& checkers) {

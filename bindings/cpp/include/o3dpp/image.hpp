@@ -11,25 +11,12 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
 
-/// @brief Image.filter kernels.
-enum class ImageFilter : int32_t {
-    Gaussian3 = O3D_IMAGE_FILTER_GAUSSIAN3,
-    Gaussian5 = O3D_IMAGE_FILTER_GAUSSIAN5,
-    Gaussian7 = O3D_IMAGE_FILTER_GAUSSIAN7,
-    Sobel3Dx = O3D_IMAGE_FILTER_SOBEL3_DX,
-    Sobel3Dy = O3D_IMAGE_FILTER_SOBEL3_DY
-};
-
-/// @brief How create_float_image makes color gray.
-enum class ImageConvert : int32_t { Equal = O3D_IMAGE_CONVERT_EQUAL, Weighted = O3D_IMAGE_CONVERT_WEIGHTED };
-
-/// @brief The array of an image: its pixel bytes (one byte a row).
-enum class ImageArray : int32_t { Data = O3D_IMAGE_DATA };
 namespace detail {
 using ImageArrayFns = ArrayFns<&o3d_image_has_array, &o3d_image_array_shape, &o3d_image_get_array,
                                &o3d_image_array_view, &o3d_image_array_mutable_view, &o3d_image_set_array, nullptr>;

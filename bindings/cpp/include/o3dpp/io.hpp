@@ -7,41 +7,15 @@
 #include <vector>
 
 #include "o3d/io.h"
+#include "o3dpp/camera.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
-#include "o3dpp/camera.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/image.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/trianglemesh.hpp"
 
 namespace o3dpp {
-
-/// @brief o3d.io.read_point_cloud keyword arguments; defaults from o3d_read_options_init.
-struct ReadOptions : COptions<ReadOptions, o3d_read_options_t, &o3d_read_options_init> {
-    bool remove_nan_points;
-    bool remove_infinite_points;
-
-    ReadOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.remove_nan_points, c.remove_nan_points);
-        f(s.remove_infinite_points, c.remove_infinite_points);
-    }
-};
-
-/// @brief o3d.io.write_point_cloud keyword arguments; defaults from o3d_write_options_init.
-struct WriteOptions : COptions<WriteOptions, o3d_write_options_t, &o3d_write_options_init> {
-    bool write_ascii;
-    bool compressed;
-
-    WriteOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.write_ascii, c.write_ascii);
-        f(s.compressed, c.compressed);
-    }
-};
 
 /// @brief Read a cloud; an empty `format` means: from the extension.
 inline PointCloud read_point_cloud(const std::string& path, const std::string& format = "",
@@ -80,36 +54,6 @@ inline Buffer write_point_cloud_to_memory(const PointCloud& cloud, const std::st
 }
 
 // ---- triangle meshes: "ply", "obj", "stl", "off", "gltf", "glb" ----
-
-/// @brief o3d.io.read_triangle_mesh keyword arguments; defaults from o3d_mesh_read_options_init.
-struct MeshReadOptions : COptions<MeshReadOptions, o3d_mesh_read_options_t, &o3d_mesh_read_options_init> {
-    bool enable_post_processing;
-
-    MeshReadOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.enable_post_processing, c.enable_post_processing);
-    }
-};
-
-/// @brief o3d.io.write_triangle_mesh keyword arguments; defaults from o3d_mesh_write_options_init.
-struct MeshWriteOptions : COptions<MeshWriteOptions, o3d_mesh_write_options_t, &o3d_mesh_write_options_init> {
-    bool write_ascii;
-    bool compressed;  ///< accepted for Open3D compatibility; no format here compresses
-    bool write_vertex_normals;
-    bool write_vertex_colors;
-    bool write_triangle_uvs;
-
-    MeshWriteOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.write_ascii, c.write_ascii);
-        f(s.compressed, c.compressed);
-        f(s.write_vertex_normals, c.write_vertex_normals);
-        f(s.write_vertex_colors, c.write_vertex_colors);
-        f(s.write_triangle_uvs, c.write_triangle_uvs);
-    }
-};
 
 /// @brief Read a mesh; an empty `format` means: from the extension.
 inline TriangleMesh read_triangle_mesh(const std::string& path, const std::string& format = "",

@@ -10,6 +10,7 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -19,12 +20,6 @@ namespace o3dpp {
 
 using Line = std::array<int32_t, 2>;  ///< two point indices
 
-/// @brief The arrays of a line set (O3D_LINESET_*): points N x 3, colors M x 3 (one per line), lines M x 2 int32.
-enum class LineSetArray : int32_t {
-    Points = O3D_LINESET_POINTS,
-    Colors = O3D_LINESET_COLORS,
-    Lines = O3D_LINESET_LINES
-};
 namespace detail {
 using LineSetArrayFns =
     ArrayFns<&o3d_lineset_has_array, &o3d_lineset_array_shape, &o3d_lineset_get_array, &o3d_lineset_array_view,

@@ -24,4 +24,5 @@
 #include "o3dpp/span.hpp"
 #include "o3dpp/trianglemesh.hpp"
 #include "o3dpp/visualization.hpp"
+#include "o3dpp/visualizer.hpp"
 #include "o3dpp/voxelgrid.hpp"

@@ -2,7 +2,7 @@
 #pragma once
 /// @file options.hpp
 /// @brief COptions: the base of the wrapper's option structs. Defaults come from the C `*_init` function;
-/// `Derived::fields(self, c, copy)` names each field's C counterpart once, for both directions.
+/// `Fields::fields(self, c, copy)` (generated) names each field's C counterpart once, for both directions.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -35,25 +35,33 @@ struct Store {
 };
 }  // namespace detail
 
-/// @brief Option struct bound to the C struct `C` filled by `Init` (o3d_<thing>_options_init).
-template <typename Derived, typename C, o3d_status (*Init)(C*, uint32_t)>
-struct COptions {
+/// @brief Option struct over the C struct `C` filled by `Init` (o3d_<thing>_options_init): the members and
+/// their `fields(self, c, copy)` come from `Fields` (generated/options.hpp, from the C header).
+template <typename Derived, typename Fields, typename C, o3d_status (*Init)(C*, uint32_t)>
+struct COptions : Fields {
     /// @brief The library's defaults.
+    COptions() { load(library_defaults()); }
+    /// @brief The library's defaults, as the C struct.
     static C library_defaults() {
         C c;
         check(Init(&c, sizeof c));
         return c;
     }
+    /// @brief The options in `c`.
+    static Derived from_c(const C& c) {
+        Derived d;
+        d.load(c);
+        return d;
+    }
     /// @brief The C struct: the library's defaults, then these fields.
     C to_c() const {
         C c = library_defaults();
-        Derived::fields(static_cast<const Derived&>(*this), c, detail::Store{});
+        Fields::fields(static_cast<const Fields&>(*this), c, detail::Store{});
         return c;
     }
 
 protected:
-    /// @brief Set every field from `c` (the derived constructor calls it with library_defaults()).
-    void load(C c) { Derived::fields(static_cast<Derived&>(*this), c, detail::Load{}); }
+    void load(const C& c) { Fields::fields(static_cast<Fields&>(*this), c, detail::Load{}); }
 };
 
 }  // namespace o3dpp

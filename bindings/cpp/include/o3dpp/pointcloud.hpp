@@ -12,39 +12,27 @@
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
 
 /// @brief Neighbourhood search parameter (KDTreeSearchParamKNN / Radius / Hybrid); defaults from
 /// o3d_search_param_init.
-struct SearchParam : COptions<SearchParam, o3d_search_param_t, &o3d_search_param_init> {
-    enum class Kind : int32_t { Knn = O3D_SEARCH_KNN, Radius = O3D_SEARCH_RADIUS, Hybrid = O3D_SEARCH_HYBRID };
-    Kind kind;
-    int knn;
-    double radius;
-
-    SearchParam() { load(library_defaults()); }
-    SearchParam(Kind k, int max_nn, double r) : kind(k), knn(max_nn), radius(r) {}
+struct SearchParam : detail::SearchParamBase {
+    using Kind = SearchKind;
+    SearchParam() = default;
+    SearchParam(Kind k, int max_nn, double r) {
+        kind = k;
+        knn = max_nn;
+        radius = r;
+    }
     static SearchParam Knn(int k) { return {Kind::Knn, k, SearchParam().radius}; }
     static SearchParam Radius(double r) { return {Kind::Radius, SearchParam().knn, r}; }
     static SearchParam Hybrid(double r, int k) { return {Kind::Hybrid, k, r}; }
-
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.kind, c.kind), f(s.knn, c.knn), f(s.radius, c.radius);
-    }
 };
 
-/// @brief The arrays of a cloud (O3D_POINTCLOUD_*): N x 3 float64, covariances N x 9.
-enum class PointCloudArray : int32_t {
-    Points = O3D_POINTCLOUD_POINTS,
-    Normals = O3D_POINTCLOUD_NORMALS,
-    Colors = O3D_POINTCLOUD_COLORS,
-    Covariances = O3D_POINTCLOUD_COVARIANCES
-};
 namespace detail {
 using PointCloudArrayFns =
     ArrayFns<&o3d_pointcloud_has_array, &o3d_pointcloud_array_shape, &o3d_pointcloud_get_array,

@@ -15,22 +15,15 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
 
 /// @brief PoseGraphEdge; defaults from o3d_pose_graph_edge_init (0 -> 0, identity, odometry, confidence 1).
-struct PoseGraphEdge : COptions<PoseGraphEdge, o3d_pose_graph_edge_t, &o3d_pose_graph_edge_init> {
-    int32_t source_node_id;
-    int32_t target_node_id;
-    Mat4 transformation;
-    Mat6 information;
-    bool uncertain;  ///< a loop closure the line process may prune
-    double confidence;
-
-    PoseGraphEdge() { load(library_defaults()); }
+struct PoseGraphEdge : detail::PoseGraphEdgeBase {
+    PoseGraphEdge() = default;
     /// @brief Edge source -> target with transform `t`; the other fields as given or the library's defaults.
     PoseGraphEdge(int32_t source, int32_t target, const Mat4& t) : PoseGraphEdge() {
         source_node_id = source;
@@ -51,21 +44,6 @@ struct PoseGraphEdge : COptions<PoseGraphEdge, o3d_pose_graph_edge_t, &o3d_pose_
     }
     /// @brief The library's default edge (o3d_pose_graph_edge_init).
     static PoseGraphEdge library_default() { return PoseGraphEdge(); }
-    static PoseGraphEdge from_c(const o3d_pose_graph_edge_t& c) {
-        PoseGraphEdge e;
-        e.load(c);
-        return e;
-    }
-
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.source_node_id, c.source_node_id);
-        f(s.target_node_id, c.target_node_id);
-        f(s.transformation, c.transformation);
-        f(s.information, c.information);
-        f(s.uncertain, c.uncertain);
-        f(s.confidence, c.confidence);
-    }
     bool operator==(const PoseGraphEdge& o) const {
         return std::tie(source_node_id, target_node_id, transformation, information, uncertain, confidence) ==
                std::tie(o.source_node_id, o.target_node_id, o.transformation, o.information, o.uncertain,
@@ -128,53 +106,6 @@ inline PoseGraph read_pose_graph(const std::string& path) {
 inline void write_pose_graph(const std::string& path, const PoseGraph& graph) {
     check(o3d_io_write_pose_graph(path.c_str(), graph.get()));
 }
-
-enum class GlobalOptimizationMethod : int32_t {
-    GaussNewton = O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON,
-    LevenbergMarquardt = O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT
-};
-
-/// @brief GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption, method, threads,
-/// progress; defaults from o3d_global_optimization_options_init.
-struct GlobalOptimizationOptions
-    : COptions<GlobalOptimizationOptions, o3d_global_optimization_options_t, &o3d_global_optimization_options_init> {
-    GlobalOptimizationMethod method;
-    int max_iteration;
-    double min_relative_increment;
-    double min_relative_residual_increment;
-    double min_right_term;
-    double min_residual;
-    int max_iteration_lm;
-    double upper_scale_factor;
-    double lower_scale_factor;
-    double max_correspondence_distance;
-    double edge_prune_threshold;
-    double preference_loop_closure;
-    int reference_node;  ///< -1: the first node
-    int num_threads;
-    /// @brief Fraction of max_iteration done over both passes; return false to cancel (the graph
-    /// is then left unchanged). An exception it throws cancels the call and is rethrown.
-    ProgressCallback progress;
-
-    GlobalOptimizationOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.method, c.method);
-        f(s.max_iteration, c.max_iteration);
-        f(s.min_relative_increment, c.min_relative_increment);
-        f(s.min_relative_residual_increment, c.min_relative_residual_increment);
-        f(s.min_right_term, c.min_right_term);
-        f(s.min_residual, c.min_residual);
-        f(s.max_iteration_lm, c.max_iteration_lm);
-        f(s.upper_scale_factor, c.upper_scale_factor);
-        f(s.lower_scale_factor, c.lower_scale_factor);
-        f(s.max_correspondence_distance, c.max_correspondence_distance);
-        f(s.edge_prune_threshold, c.edge_prune_threshold);
-        f(s.preference_loop_closure, c.preference_loop_closure);
-        f(s.reference_node, c.reference_node);
-        f(s.num_threads, c.num_threads);
-    }
-};
 
 /// @brief What a global optimization did.
 struct GlobalOptimizationSummary {

@@ -11,83 +11,12 @@
 #include "o3d/registration.h"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
-
-enum class Estimation : int32_t {
-    PointToPoint = O3D_ESTIMATION_POINT_TO_POINT,
-    PointToPlane = O3D_ESTIMATION_POINT_TO_PLANE,  ///< the target needs normals
-    Colored = O3D_ESTIMATION_COLORED,              ///< both need colors, the target normals (Park et al. 2017)
-    Generalized = O3D_ESTIMATION_GENERALIZED,      ///< Segal et al. 2009
-    Symmetric = O3D_ESTIMATION_SYMMETRIC           ///< both need normals (Rusinkiewicz 2019)
-};
-
-/// @brief Robust kernel (M-estimator) weighting each residual r, with scale k (Open3D's L2Loss(),
-/// TukeyLoss(k), ...). Used by point-to-plane, colored, generalized and symmetric ICP.
-struct RobustKernel {
-    enum class Type : int32_t {
-        L2 = O3D_KERNEL_L2,          ///< w = 1
-        L1 = O3D_KERNEL_L1,          ///< w = 1 / |r|
-        Huber = O3D_KERNEL_HUBER,    ///< w = 1 if |r| <= k else k / |r|
-        Cauchy = O3D_KERNEL_CAUCHY,  ///< w = 1 / (1 + (r / k)^2)
-        GM = O3D_KERNEL_GM,          ///< w = k / (k + r^2)^2
-        Tukey = O3D_KERNEL_TUKEY     ///< w = (1 - (r / k)^2)^2 if |r| <= k else 0
-    };
-    Type type = Type::L2;
-    double k = 1.0;  ///< unused by L2 and L1
-
-    static RobustKernel L2() { return {Type::L2, 1.0}; }
-    static RobustKernel L1() { return {Type::L1, 1.0}; }
-    static RobustKernel Huber(double k) { return {Type::Huber, k}; }
-    static RobustKernel Cauchy(double k) { return {Type::Cauchy, k}; }
-    static RobustKernel GM(double k) { return {Type::GM, k}; }
-    static RobustKernel Tukey(double k) { return {Type::Tukey, k}; }
-
-    /// @brief The weight given to `residual`. @see RobustKernel.weight
-    double weight(double residual) const {
-        double w = 0;
-        check(o3d_robust_kernel_weight(&w, static_cast<int32_t>(type), k, residual));
-        return w;
-    }
-};
-
-/// @brief ICP options (estimation method + ICPConvergenceCriteria); defaults from o3d_icp_options_init.
-struct IcpOptions : COptions<IcpOptions, o3d_icp_options_t, &o3d_icp_options_init> {
-    Estimation estimation;
-    bool with_scaling;
-    double relative_fitness;
-    double relative_rmse;
-    int max_iteration;
-    int num_threads;
-    /// @brief Robust kernel of point-to-plane, colored, generalized and symmetric ICP.
-    RobustKernel kernel;
-    /// @brief Colored ICP: weight of the geometric term, in [0, 1].
-    double lambda_geometric;
-    /// @brief Generalized ICP: covariance regularisation (> 0).
-    double epsilon;
-    /// @brief Called after each iteration; return false to cancel (Error with O3D_ERROR_CANCELLED).
-    /// An exception it throws cancels the call and is rethrown to the caller.
-    ProgressCallback progress;
-
-    IcpOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.estimation, c.estimation);
-        f(s.with_scaling, c.with_scaling);
-        f(s.relative_fitness, c.relative_fitness);
-        f(s.relative_rmse, c.relative_rmse);
-        f(s.max_iteration, c.max_iteration);
-        f(s.num_threads, c.num_threads);
-        f(s.kernel.type, c.kernel);
-        f(s.kernel.k, c.kernel_k);
-        f(s.lambda_geometric, c.lambda_geometric);
-        f(s.epsilon, c.epsilon);
-    }
-};
 
 /// @brief Transformation, fitness, inlier RMSE and correspondences. Move-only.
 class RegistrationResult

@@ -7,35 +7,12 @@
 #include "o3d/rgbd.h"
 #include "o3dpp/camera.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 
 namespace o3dpp {
-
-/// @brief RGBDImage.create_from_color_and_depth keyword arguments; defaults from o3d_rgbd_options_init.
-struct RgbdOptions : COptions<RgbdOptions, o3d_rgbd_options_t, &o3d_rgbd_options_init> {
-    double depth_scale;
-    double depth_trunc;
-    bool convert_rgb_to_intensity;
-
-    RgbdOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.depth_scale, c.depth_scale);
-        f(s.depth_trunc, c.depth_trunc);
-        f(s.convert_rgb_to_intensity, c.convert_rgb_to_intensity);
-    }
-};
-
-/// @brief The dataset layouts of the Open3D paper.
-enum class RgbdFormat : int32_t {
-    Redwood = O3D_RGBD_FORMAT_REDWOOD,
-    Tum = O3D_RGBD_FORMAT_TUM,
-    Sun = O3D_RGBD_FORMAT_SUN,
-    Nyu = O3D_RGBD_FORMAT_NYU
-};
 
 /// @brief A color (or intensity) image and a float depth image in metres. Move-only.
 class RgbdImage : public Owner<RgbdImage, o3d_rgbd_image_t, &o3d_rgbd_image_destroy> {
@@ -59,24 +36,6 @@ public:
     Image color() const { return derive<Image>(&o3d_rgbd_image_get_color); }
     /// @brief Copy of the depth image (float metres).
     Image depth() const { return derive<Image>(&o3d_rgbd_image_get_depth); }
-};
-
-/// @brief PointCloud.create_from_depth_image keyword arguments; defaults from o3d_depth_to_cloud_options_init.
-struct DepthToCloudOptions
-    : COptions<DepthToCloudOptions, o3d_depth_to_cloud_options_t, &o3d_depth_to_cloud_options_init> {
-    double depth_scale;
-    double depth_trunc;
-    int stride;
-    bool project_valid_depth_only;
-
-    DepthToCloudOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.depth_scale, c.depth_scale);
-        f(s.depth_trunc, c.depth_trunc);
-        f(s.stride, c.stride);
-        f(s.project_valid_depth_only, c.project_valid_depth_only);
-    }
 };
 
 /// @brief Back-project a depth image (uint16 raw or float metres) through `intrinsic`, then to world

@@ -15,9 +15,9 @@
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 
@@ -26,16 +26,6 @@ namespace o3dpp {
 using Triangle = std::array<int32_t, 3>;  ///< three vertex indices
 using Vec2 = std::array<double, 2>;       ///< a UV
 
-/// @brief The arrays of a mesh (O3D_MESH_*): N x 3 float64, UVs 3M x 2, triangles M x 3 int32, material ids M.
-enum class MeshArray : int32_t {
-    Vertices = O3D_MESH_VERTICES,
-    VertexNormals = O3D_MESH_VERTEX_NORMALS,
-    VertexColors = O3D_MESH_VERTEX_COLORS,
-    TriangleNormals = O3D_MESH_TRIANGLE_NORMALS,
-    TriangleUvs = O3D_MESH_TRIANGLE_UVS,
-    Triangles = O3D_MESH_TRIANGLES,
-    TriangleMaterialIds = O3D_MESH_TRIANGLE_MATERIAL_IDS
-};
 namespace detail {
 using MeshArrayFns =
     ArrayFns<&o3d_trianglemesh_has_array, &o3d_trianglemesh_array_shape, &o3d_trianglemesh_get_array,
@@ -43,43 +33,6 @@ using MeshArrayFns =
              &o3d_trianglemesh_set_array_f32, &o3d_trianglemesh_get_index_array, &o3d_trianglemesh_index_array_view,
              &o3d_trianglemesh_index_array_mutable_view, &o3d_trianglemesh_set_index_array>;
 }  // namespace detail
-
-/// @brief Which vertex attributes the smoothing filters touch.
-enum class FilterScope : int32_t {
-    All = O3D_FILTER_SCOPE_ALL,
-    Color = O3D_FILTER_SCOPE_COLOR,
-    Normal = O3D_FILTER_SCOPE_NORMAL,
-    Vertex = O3D_FILTER_SCOPE_VERTEX
-};
-
-/// @brief Vertex-clustering contraction.
-enum class SimplificationContraction : int32_t {
-    Average = O3D_SIMPLIFICATION_AVERAGE,
-    Quadric = O3D_SIMPLIFICATION_QUADRIC
-};
-
-/// @brief TriangleMesh.create_mobius keyword arguments; defaults from o3d_mobius_options_init.
-struct MobiusOptions : COptions<MobiusOptions, o3d_mobius_options_t, &o3d_mobius_options_init> {
-    int length_split;  ///< columns along the band, >= 3
-    int width_split;   ///< vertices across the band, >= 2
-    int twists;        ///< half turns (odd: a Moebius strip)
-    double radius;
-    double flatness;
-    double width;
-    double scale;
-
-    MobiusOptions() { load(library_defaults()); }
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.length_split, c.length_split);
-        f(s.width_split, c.width_split);
-        f(s.twists, c.twists);
-        f(s.radius, c.radius);
-        f(s.flatness, c.flatness);
-        f(s.width, c.width);
-        f(s.scale, c.scale);
-    }
-};
 
 /// @brief Edge-connected triangle clusters.
 struct TriangleClusters {

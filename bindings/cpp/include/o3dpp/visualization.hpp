@@ -14,10 +14,10 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/camera.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/options.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
 #include "o3dpp/lineset.hpp"
-#include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 #include "o3dpp/trianglemesh.hpp"
@@ -25,55 +25,8 @@
 
 namespace o3dpp {
 
-/// @brief Where the renderer's OpenGL context comes from.
-enum class RenderBackend : int32_t {
-    Auto = O3D_RENDER_BACKEND_AUTO,  ///< EGL when it works, else a hidden GLFW window
-    Egl = O3D_RENDER_BACKEND_EGL,    ///< headless EGL only
-    Glfw = O3D_RENDER_BACKEND_GLFW   ///< a hidden GLFW window only (needs a display)
-};
-
-/// @brief RenderOption.mesh_shade_option.
-enum class MeshShadeOption : int32_t { Flat = O3D_MESH_SHADE_FLAT, Smooth = O3D_MESH_SHADE_SMOOTH };
-
-/// @brief RenderOption.point_color_option and mesh_color_option.
-enum class ColorOption : int32_t {
-    Default = O3D_COLOR_OPTION_DEFAULT,
-    Color = O3D_COLOR_OPTION_COLOR,
-    XCoordinate = O3D_COLOR_OPTION_X,
-    YCoordinate = O3D_COLOR_OPTION_Y,
-    ZCoordinate = O3D_COLOR_OPTION_Z,
-    Normal = O3D_COLOR_OPTION_NORMAL
-};
-
-/// @brief A material's shader.
-enum class Shader : int32_t { DefaultLit = O3D_SHADER_DEFAULT_LIT, DefaultUnlit = O3D_SHADER_DEFAULT_UNLIT };
-
 /// @brief o3d.visualization.RenderOption; defaults from o3d_render_option_init (Open3D's).
-struct RenderOption : COptions<RenderOption, o3d_render_option_t, &o3d_render_option_init> {
-    Vec3 background_color;
-    double point_size;
-    double line_width;
-    bool light_on;
-    bool point_show_normal;
-    bool mesh_show_wireframe;
-    bool mesh_show_back_face;
-    MeshShadeOption mesh_shade_option;
-    ColorOption point_color_option;
-    ColorOption mesh_color_option;
-    Vec3 default_mesh_color;
-    Vec3 light_ambient_color;
-    std::array<double, 12> light_position;  ///< 4 lights x (right, up, front) relative to the scene's box
-    std::array<double, 12> light_color;     ///< 4 RGB
-    std::array<double, 4> light_diffuse_power;
-    std::array<double, 4> light_specular_power;
-    std::array<double, 4> light_specular_shininess;
-
-    RenderOption() { load(library_defaults()); }
-    static RenderOption from_c(const o3d_render_option_t& c) {
-        RenderOption r;
-        r.load(c);
-        return r;
-    }
+struct RenderOption : detail::RenderOptionBase {
     /// @brief These options with the fields present in an Open3D RenderOption JSON file replaced.
     RenderOption& load_from_json(const std::string& path) {
         o3d_render_option_t c = to_c();
@@ -86,48 +39,14 @@ struct RenderOption : COptions<RenderOption, o3d_render_option_t, &o3d_render_op
         const o3d_render_option_t c = to_c();
         check(o3d_render_option_save_json(path.c_str(), &c));
     }
-
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.background_color, c.background_color);
-        f(s.point_size, c.point_size);
-        f(s.line_width, c.line_width);
-        f(s.light_on, c.light_on);
-        f(s.point_show_normal, c.point_show_normal);
-        f(s.mesh_show_wireframe, c.mesh_show_wireframe);
-        f(s.mesh_show_back_face, c.mesh_show_back_face);
-        f(s.mesh_shade_option, c.mesh_shade_option);
-        f(s.point_color_option, c.point_color_option);
-        f(s.mesh_color_option, c.mesh_color_option);
-        f(s.default_mesh_color, c.default_mesh_color);
-        f(s.light_ambient_color, c.light_ambient_color);
-        f(s.light_position, c.light_position);
-        f(s.light_color, c.light_color);
-        f(s.light_diffuse_power, c.light_diffuse_power);
-        f(s.light_specular_power, c.light_specular_power);
-        f(s.light_specular_shininess, c.light_specular_shininess);
-    }
 };
 
 /// @brief How one geometry is drawn; defaults from o3d_render_material_init (lit, white tint, the
 /// RenderOption's point size and line width).
-struct RenderMaterial : COptions<RenderMaterial, o3d_render_material_t, &o3d_render_material_init> {
-    Shader shader;
-    std::array<double, 4> base_color;  ///< multiplies the geometry's colors (RGBA; alpha unused)
-    double point_size;                 ///< pixels; 0 = the RenderOption's
-    double line_width;                 ///< pixels; 0 = the RenderOption's
-
-    RenderMaterial() { load(library_defaults()); }
+struct RenderMaterial : detail::RenderMaterialBase {
+    RenderMaterial() = default;
     /// @brief The defaults with shader `s` (e.g. RenderMaterial(Shader::DefaultUnlit)).
-    explicit RenderMaterial(Shader s) : RenderMaterial() { shader = s; }
-
-    template <typename S, typename C, typename F>
-    static void fields(S& s, C& c, F f) {
-        f(s.shader, c.shader);
-        f(s.base_color, c.base_color);
-        f(s.point_size, c.point_size);
-        f(s.line_width, c.line_width);
-    }
+    explicit RenderMaterial(Shader s) { shader = s; }
 };
 
 /// @brief rendering.OffscreenRenderer: draws copies of geometries into a width x height image without a

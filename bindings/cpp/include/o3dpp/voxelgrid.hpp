@@ -9,6 +9,7 @@
 #include "o3d/voxelgrid.h"
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/generated/enums.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -24,8 +25,6 @@ struct Voxel {
     Vec3 color{};  ///< mean color of what fell in the cell (0 without colors)
 };
 
-/// @brief The arrays of a voxel grid (read-only), a row per voxel: colors N x 3, grid indices N x 3 int32.
-enum class VoxelGridArray : int32_t { Colors = O3D_VOXELGRID_COLORS, GridIndices = O3D_VOXELGRID_GRID_INDEX };
 namespace detail {
 using VoxelGridArrayFns = ArrayFns<&o3d_voxelgrid_has_array, &o3d_voxelgrid_array_shape, &o3d_voxelgrid_get_array,
                                    nullptr, nullptr, nullptr, nullptr, &o3d_voxelgrid_get_index_array>;

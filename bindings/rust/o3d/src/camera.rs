@@ -23,18 +23,7 @@ pub struct PinholeIntrinsic {
     pub cy: f64,
 }
 
-c_enum! {
-    /// Open3D's PinholeCameraIntrinsicParameters presets (`O3D_INTRINSIC_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum IntrinsicPreset("intrinsic preset") {
-        /// 640x480, f 525, c (319.5, 239.5).
-        PrimeSenseDefault = sys::O3D_INTRINSIC_PRIMESENSE_DEFAULT,
-        /// Kinect v2 depth camera, 512x424.
-        Kinect2DepthDefault = sys::O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT,
-        /// Kinect v2 color camera, 1920x1080.
-        Kinect2ColorDefault = sys::O3D_INTRINSIC_KINECT2_COLOR_DEFAULT,
-    }
-}
+include!("generated/camera.rs");
 
 impl PinholeIntrinsic {
     /// An intrinsic from its six values.

@@ -40,34 +40,7 @@ impl PixelType {
     }
 }
 
-c_enum! {
-    /// The filters of [`Image::filter`] (`O3D_IMAGE_FILTER_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum ImageFilter("image filter") {
-        /// 3x3 Gaussian.
-        Gaussian3 = sys::O3D_IMAGE_FILTER_GAUSSIAN3,
-        /// 5x5 Gaussian.
-        Gaussian5 = sys::O3D_IMAGE_FILTER_GAUSSIAN5,
-        /// 7x7 Gaussian.
-        Gaussian7 = sys::O3D_IMAGE_FILTER_GAUSSIAN7,
-        /// Horizontal Sobel derivative.
-        Sobel3Dx = sys::O3D_IMAGE_FILTER_SOBEL3_DX,
-        /// Vertical Sobel derivative.
-        Sobel3Dy = sys::O3D_IMAGE_FILTER_SOBEL3_DY,
-    }
-}
-
-c_enum! {
-    /// How [`Image::create_float_image`] turns color into gray (`O3D_IMAGE_CONVERT_*`).
-    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-    pub enum ConvertType("convert type") {
-        /// Mean of R, G and B.
-        Equal = sys::O3D_IMAGE_CONVERT_EQUAL,
-        /// 0.299 R + 0.587 G + 0.114 B (Open3D's default).
-        #[default]
-        Weighted = sys::O3D_IMAGE_CONVERT_WEIGHTED,
-    }
-}
+include!("generated/image.rs");
 
 handle! {
     /// A 2D image. Owns an `o3d_image_t`; `Send` and `Sync` under the same rule as [`crate::PointCloud`].

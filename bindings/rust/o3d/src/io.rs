@@ -20,29 +20,7 @@ pub use crate::feature::{read_feature, write_feature};
 pub use crate::io_geometry::*;
 pub use crate::posegraph::{read_pose_graph, write_pose_graph};
 
-options! {
-    /// Read options (o3d.io.read_point_cloud keyword arguments); `Default` is the library's
-    /// (`o3d_read_options_init`: nothing removed).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub struct ReadOptions(sys::o3d_read_options_t, sys::o3d_read_options_init) {
-        /// Drop points with a NaN coordinate.
-        pub remove_nan_points: bool = remove_nan_points,
-        /// Drop points with an infinite coordinate.
-        pub remove_infinite_points: bool = remove_infinite_points,
-    }
-}
-
-options! {
-    /// Write options (o3d.io.write_point_cloud keyword arguments); `Default` is the library's
-    /// (`o3d_write_options_init`: binary, uncompressed).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub struct WriteOptions(sys::o3d_write_options_t, sys::o3d_write_options_init) {
-        /// PLY/PCD: text instead of binary.
-        pub write_ascii: bool = write_ascii,
-        /// PCD: binary_compressed (LZF).
-        pub compressed: bool = compressed,
-    }
-}
+include!("generated/io.rs");
 
 pub(crate) fn c_string(what: &str, s: &str) -> Result<CString> {
     CString::new(s).map_err(|_| Error::new(ErrorCode::InvalidArgument, format!("{what} {s:?} contains a NUL byte")))

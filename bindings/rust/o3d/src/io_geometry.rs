@@ -10,33 +10,7 @@ use crate::io::{c_path, c_string, new_buffer, Buffer};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
 use crate::util::options;
 
-options! {
-    /// o3d.io.read_triangle_mesh keyword arguments; `Default` is the library's
-    /// (`o3d_mesh_read_options_init`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub struct MeshReadOptions(sys::o3d_mesh_read_options_t, sys::o3d_mesh_read_options_init) {
-        /// Merge duplicated vertices and drop degenerate triangles after reading (default false).
-        pub enable_post_processing: bool = enable_post_processing,
-    }
-}
-
-options! {
-    /// o3d.io.write_triangle_mesh keyword arguments; `Default` is the library's
-    /// (`o3d_mesh_write_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub struct MeshWriteOptions(sys::o3d_mesh_write_options_t, sys::o3d_mesh_write_options_init) {
-        /// PLY/STL: text instead of binary (default false).
-        pub write_ascii: bool = write_ascii,
-        /// Accepted for Open3D compatibility; no format here compresses (default false).
-        pub compressed: bool = compressed,
-        /// Default true.
-        pub write_vertex_normals: bool = write_vertex_normals,
-        /// Default true.
-        pub write_vertex_colors: bool = write_vertex_colors,
-        /// Default true.
-        pub write_triangle_uvs: bool = write_triangle_uvs,
-    }
-}
+include!("generated/io_geometry.rs");
 
 // ---- triangle meshes ----
 

@@ -9,7 +9,8 @@
 //! ([`registration::registration_ransac_based_on_feature_matching`],
 //! [`registration::registration_fgr_based_on_feature_matching`]), [`PoseGraph`] and
 //! [`registration::global_optimization`], and rendering without a display: [`OffscreenRenderer`]
-//! (`o3d.visualization.rendering.OffscreenRenderer`) with [`RenderOption`] and [`RenderMaterial`].
+//! (`o3d.visualization.rendering.OffscreenRenderer`) with [`RenderOption`] and [`RenderMaterial`],
+//! and the viewer [`Visualizer`] (hidden windows render headless).
 //!
 //! * Every fallible call returns [`Result<T, Error>`](Error); the error carries the library's message.
 //! * Handles are owned (`Drop` destroys them); views such as [`PointCloud::points`] are zero-copy
@@ -60,6 +61,7 @@ mod trianglemesh_ops;
 mod trianglemesh_primitives;
 mod util;
 pub mod visualization;
+mod visualizer;
 mod voxelgrid;
 
 pub use boundingbox::OrientedBoundingBox;
@@ -77,7 +79,8 @@ pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
 pub use trianglemesh::{MeshArray, TriangleMesh};
 pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
 pub use visualization::{
-    ColorOption, Drawable, MeshShadeOption, OffscreenRenderer, RenderBackend, RenderMaterial, RenderOption, Shader,
+    ColorOption, Drawable, KeyAction, MeshShadeOption, MouseButton, OffscreenRenderer, RenderBackend, RenderMaterial,
+    RenderOption, Shader, View, Visualizer,
 };
 pub use voxelgrid::{Voxel, VoxelGrid};
 
@@ -96,20 +99,7 @@ pub fn version_numbers() -> (i32, i32, i32) {
     unsafe { (sys::o3d_version_major(), sys::o3d_version_minor(), sys::o3d_version_patch()) }
 }
 
-c_enum! {
-    /// Log levels, most severe first (`O3D_LOG_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-    pub enum LogLevel("log level") {
-        /// `O3D_LOG_ERROR`
-        Error = sys::O3D_LOG_ERROR,
-        /// `O3D_LOG_WARNING`
-        Warning = sys::O3D_LOG_WARNING,
-        /// `O3D_LOG_INFO`
-        Info = sys::O3D_LOG_INFO,
-        /// `O3D_LOG_DEBUG`
-        Debug = sys::O3D_LOG_DEBUG,
-    }
-}
+include!("generated/lib.rs");
 
 impl LogLevel {
     /// A level from the library; anything past `O3D_LOG_DEBUG` reads as `Debug`.

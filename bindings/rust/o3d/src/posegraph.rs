@@ -14,26 +14,7 @@ use crate::io::c_path;
 use crate::progress::progress_pair;
 use crate::util::{c_enum, handle, mat4_ptr, options};
 
-options! {
-    /// A pose-graph edge (o3d.pipelines.registration.PoseGraphEdge). `Default` is the library's
-    /// (`o3d_pose_graph_edge_init`, Open3D's): nodes 0 -> 0, identity transformation and
-    /// information, certain (odometry), confidence 1.
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct PoseGraphEdge(sys::o3d_pose_graph_edge_t, sys::o3d_pose_graph_edge_init) {
-        /// Index of the source node.
-        pub source_node_id: i32 = source_node_id,
-        /// Index of the target node.
-        pub target_node_id: i32 = target_node_id,
-        /// Maps points of the source node's frame into the target node's.
-        pub transformation: [[f64; 4]; 4] = transformation,
-        /// 6x6 information matrix (rotation first, then translation, as Open3D).
-        pub information: [[f64; 6]; 6] = information,
-        /// A loop closure the line process may prune (false: odometry).
-        pub uncertain: bool = uncertain,
-        /// Line-process weight in [0, 1].
-        pub confidence: f64 = confidence,
-    }
-}
+include!("generated/posegraph.rs");
 
 impl PoseGraphEdge {
     /// Open3D's `PoseGraphEdge(source, target, transformation, information, uncertain)`, with the
@@ -162,16 +143,6 @@ pub fn write_pose_graph(path: impl AsRef<Path>, graph: &PoseGraph) -> Result<()>
     check(unsafe { sys::o3d_io_write_pose_graph(path.as_ptr(), graph.as_raw()) })
 }
 
-c_enum! {
-    /// Solver of [`global_optimization`] (`O3D_GLOBAL_OPTIMIZATION_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub enum GlobalOptimizationMethod("optimization method") {
-        /// GlobalOptimizationGaussNewton.
-        GaussNewton = sys::O3D_GLOBAL_OPTIMIZATION_GAUSS_NEWTON,
-        /// GlobalOptimizationLevenbergMarquardt (the default).
-        LevenbergMarquardt = sys::O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT,
-    }
-}
 
 impl Default for GlobalOptimizationMethod {
     /// The library's default (`o3d_global_optimization_options_init`: Levenberg-Marquardt).
@@ -180,44 +151,6 @@ impl Default for GlobalOptimizationMethod {
     }
 }
 
-options! {
-    /// GlobalOptimizationConvergenceCriteria + GlobalOptimizationOption + method and threads.
-    /// `Default` is the library's (`o3d_global_optimization_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct GlobalOptimizationOptions(
-        sys::o3d_global_optimization_options_t,
-        sys::o3d_global_optimization_options_init
-    ) {
-        /// Solver (default Levenberg-Marquardt).
-        pub method: GlobalOptimizationMethod = method,
-        /// Iterations per pass (default 100).
-        pub max_iteration: usize = max_iteration,
-        /// Default 1e-6.
-        pub min_relative_increment: f64 = min_relative_increment,
-        /// Default 1e-6.
-        pub min_relative_residual_increment: f64 = min_relative_residual_increment,
-        /// Default 1e-6.
-        pub min_right_term: f64 = min_right_term,
-        /// Default 1e-6.
-        pub min_residual: f64 = min_residual,
-        /// Levenberg-Marquardt damping retries per iteration (default 20).
-        pub max_iteration_lm: usize = max_iteration_lm,
-        /// Levenberg-Marquardt (default 2/3).
-        pub upper_scale_factor: f64 = upper_scale_factor,
-        /// Levenberg-Marquardt (default 1/3).
-        pub lower_scale_factor: f64 = lower_scale_factor,
-        /// Sets the line-process scale (default 0.075).
-        pub max_correspondence_distance: f64 = max_correspondence_distance,
-        /// Uncertain edges whose confidence ends below it are removed (default 0.25).
-        pub edge_prune_threshold: f64 = edge_prune_threshold,
-        /// Weight of loop closures against odometry (default 1.0).
-        pub preference_loop_closure: f64 = preference_loop_closure,
-        /// The node kept fixed; `None` (default): the first.
-        pub reference_node: Option<usize> = reference_node,
-        /// Threads; 0 = the library default (default 0). The result does not depend on it.
-        pub num_threads: usize = num_threads,
-    }
-}
 
 /// What a global optimization did.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

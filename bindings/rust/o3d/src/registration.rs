@@ -24,24 +24,7 @@ pub use crate::registration_global::*;
 pub const IDENTITY: [[f64; 4]; 4] =
     [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
-c_enum! {
-    /// Transformation estimation method (`O3D_ESTIMATION_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-    pub enum Estimation("estimation") {
-        /// TransformationEstimationPointToPoint (with optional scaling, see [`IcpOptions::with_scaling`]).
-        PointToPoint = sys::O3D_ESTIMATION_POINT_TO_POINT,
-        /// TransformationEstimationPointToPlane (the target needs normals).
-        PointToPlane = sys::O3D_ESTIMATION_POINT_TO_PLANE,
-        /// TransformationEstimationForColoredICP (Park et al. 2017): both clouds need colors, the
-        /// target normals; see [`IcpOptions::lambda_geometric`].
-        Colored = sys::O3D_ESTIMATION_COLORED,
-        /// TransformationEstimationForGeneralizedICP (Segal et al. 2009): covariances come from the
-        /// clouds, else from their normals, else from 20 neighbours; see [`IcpOptions::epsilon`].
-        Generalized = sys::O3D_ESTIMATION_GENERALIZED,
-        /// TransformationEstimationSymmetric (Rusinkiewicz 2019): both clouds need normals.
-        Symmetric = sys::O3D_ESTIMATION_SYMMETRIC,
-    }
-}
+include!("generated/registration.rs");
 
 impl Default for Estimation {
     /// The library's default (`o3d_icp_options_init`: point-to-point).
@@ -132,31 +115,6 @@ impl CField<(i32, f64)> for RobustKernel {
     }
 }
 
-options! {
-    /// ICP options: estimation method, robust kernel and ICPConvergenceCriteria. `Default` is the
-    /// library's (`o3d_icp_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct IcpOptions(sys::o3d_icp_options_t, sys::o3d_icp_options_init) {
-        /// Estimation method (default point-to-point).
-        pub estimation: Estimation = estimation,
-        /// Point-to-point only: also estimate a scale (default false).
-        pub with_scaling: bool = with_scaling,
-        /// Stop when fitness changes less than this (default 1e-6).
-        pub relative_fitness: f64 = relative_fitness,
-        /// Stop when inlier RMSE changes less than this (default 1e-6).
-        pub relative_rmse: f64 = relative_rmse,
-        /// Iteration limit (default 30).
-        pub max_iteration: usize = max_iteration,
-        /// Threads; 0 = the library default (default 0).
-        pub num_threads: usize = num_threads,
-        /// Robust kernel of point-to-plane, colored, generalized and symmetric ICP (default L2).
-        pub kernel: RobustKernel = (kernel, kernel_k),
-        /// Colored ICP: weight of the geometric term, in [0, 1] (default 0.968).
-        pub lambda_geometric: f64 = lambda_geometric,
-        /// Generalized ICP: covariance regularisation, > 0 (default 1e-3).
-        pub epsilon: f64 = epsilon,
-    }
-}
 
 /// Result of a registration (o3d.pipelines.registration.RegistrationResult).
 #[derive(Debug, Clone, PartialEq)]

@@ -97,30 +97,7 @@ fn checkers_ptr(raw: &[sys::o3d_correspondence_checker_t]) -> *const sys::o3d_co
     }
 }
 
-options! {
-    /// RANSAC options: estimation, ransac_n, RANSACConvergenceCriteria, seed, threads.
-    /// `Default` is the library's (`o3d_ransac_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct RansacOptions(sys::o3d_ransac_options_t, sys::o3d_ransac_options_init) {
-        /// [`Estimation::PointToPoint`] (default) or [`Estimation::PointToPlane`].
-        pub estimation: Estimation = estimation,
-        /// Point-to-point: also estimate a scale (default false).
-        pub with_scaling: bool = with_scaling,
-        /// Correspondences drawn per hypothesis, >= 3 (default 3).
-        pub ransac_n: usize = ransac_n,
-        /// RANSACConvergenceCriteria.max_iteration (default 100000).
-        pub max_iteration: usize = max_iteration,
-        /// RANSACConvergenceCriteria.confidence, in [0, 1] (default 0.999).
-        pub confidence: f64 = confidence,
-        /// Feature matching only: keep mutual nearest pairs (default false).
-        pub mutual_filter: bool = mutual_filter,
-        /// Draw from this seed; `None` (default) takes one from the global generator
-        /// ([`crate::random_seed`]). The same seed gives the same result on any thread count.
-        pub seed: Option<u64> = (use_seed, seed),
-        /// Threads; 0 = the library default (default 0).
-        pub num_threads: usize = num_threads,
-    }
-}
+include!("generated/registration_global.rs");
 
 progress_pair! {
     /// RANSAC over feature correspondences (the nearest target descriptor of each source descriptor):
@@ -196,33 +173,6 @@ progress_pair! {
     }
 }
 
-options! {
-    /// FastGlobalRegistrationOption plus seed and threads. `Default` is the library's
-    /// (`o3d_fgr_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct FgrOptions(sys::o3d_fgr_options_t, sys::o3d_fgr_options_init) {
-        /// > 1: mu is divided by it each annealing step (default 1.4).
-        pub division_factor: f64 = division_factor,
-        /// Distances in the clouds' units rather than normalised (default false).
-        pub use_absolute_scale: bool = use_absolute_scale,
-        /// Anneal mu (graduated non-convexity) (default true).
-        pub decrease_mu: bool = decrease_mu,
-        /// > 0 (default 0.025).
-        pub maximum_correspondence_distance: f64 = maximum_correspondence_distance,
-        /// Iterations (default 64).
-        pub iteration_number: usize = iteration_number,
-        /// In (0, 1]: edge-length similarity of the tuple test (default 0.95).
-        pub tuple_scale: f64 = tuple_scale,
-        /// Tuples kept at most (default 1000).
-        pub maximum_tuple_count: usize = maximum_tuple_count,
-        /// Apply the tuple test (default true).
-        pub tuple_test: bool = tuple_test,
-        /// As [`RansacOptions::seed`]: tuples are drawn at random (default `None`).
-        pub seed: Option<u64> = (use_seed, seed),
-        /// Threads; 0 = the library default (default 0).
-        pub num_threads: usize = num_threads,
-    }
-}
 
 progress_pair! {
     /// Fast Global Registration (Zhou, Park, Koltun 2016) on mutual feature matches.

@@ -11,34 +11,7 @@ use crate::image::{new_image, Image};
 use crate::pointcloud::{new_cloud, PointCloud};
 use crate::util::{c_enum, handle, mat4_ptr, options};
 
-options! {
-    /// RGBDImage.create_from_color_and_depth keyword arguments; `Default` is the library's
-    /// (`o3d_rgbd_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct RgbdOptions(sys::o3d_rgbd_options_t, sys::o3d_rgbd_options_init) {
-        /// Raw depth units per metre (default 1000).
-        pub depth_scale: f64 = depth_scale,
-        /// Depths beyond this many metres become 0 (default 3).
-        pub depth_trunc: f64 = depth_trunc,
-        /// Turn the color into a 1-channel float intensity (default true).
-        pub convert_rgb_to_intensity: bool = convert_rgb_to_intensity,
-    }
-}
-
-c_enum! {
-    /// The dataset layouts of [`RgbdImage::from_dataset_format`] (`O3D_RGBD_FORMAT_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum RgbdFormat("RGB-D format") {
-        /// Depth in mm, truncated at 4 m.
-        Redwood = sys::O3D_RGBD_FORMAT_REDWOOD,
-        /// Depth scale 5000, truncated at 4 m.
-        Tum = sys::O3D_RGBD_FORMAT_TUM,
-        /// SUN RGB-D: depth bits rotated right by 3, in mm, truncated at 7 m.
-        Sun = sys::O3D_RGBD_FORMAT_SUN,
-        /// NYU raw PGM disparity, truncated at 7 m.
-        Nyu = sys::O3D_RGBD_FORMAT_NYU,
-    }
-}
+include!("generated/rgbd.rs");
 
 handle! {
     /// A color (or intensity) image paired with a float depth image in metres.
@@ -93,21 +66,6 @@ impl fmt::Debug for RgbdImage {
     }
 }
 
-options! {
-    /// PointCloud.create_from_depth_image keyword arguments; `Default` is the library's
-    /// (`o3d_depth_to_cloud_options_init`, Open3D's).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct DepthToCloudOptions(sys::o3d_depth_to_cloud_options_t, sys::o3d_depth_to_cloud_options_init) {
-        /// Raw units per metre for u16 depth (default 1000).
-        pub depth_scale: f64 = depth_scale,
-        /// Farther depths are dropped, in metres (default 1000).
-        pub depth_trunc: f64 = depth_trunc,
-        /// Use every `stride`-th pixel in x and y (default 1).
-        pub stride: i32 = stride,
-        /// False: invalid pixels give NaN points (an organised cloud). Default true.
-        pub project_valid_depth_only: bool = project_valid_depth_only,
-    }
-}
 
 fn extrinsic_ptr(extrinsic: Option<&[[f64; 4]; 4]>) -> *const f64 {
     extrinsic.map_or(ptr::null(), mat4_ptr)

@@ -10,20 +10,7 @@ use crate::error::{check, Result};
 use crate::image::{new_image, Image};
 use crate::util::{c_enum, handle};
 
-c_enum! {
-    /// The float64 arrays of a mesh with three values per row (`O3D_MESH_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum MeshArray("mesh array") {
-        /// N x 3 vertex positions.
-        Vertices = sys::O3D_MESH_VERTICES,
-        /// N x 3 vertex normals.
-        VertexNormals = sys::O3D_MESH_VERTEX_NORMALS,
-        /// N x 3 vertex colors, RGB in `[0, 1]`.
-        VertexColors = sys::O3D_MESH_VERTEX_COLORS,
-        /// M x 3 triangle normals.
-        TriangleNormals = sys::O3D_MESH_TRIANGLE_NORMALS,
-    }
-}
+include!("generated/trianglemesh.rs");
 
 handle! {
     /// A triangle mesh: vertices (with optional normals and colors), triangles (with optional normals,

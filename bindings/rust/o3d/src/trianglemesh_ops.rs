@@ -6,33 +6,7 @@ use crate::pointcloud::{new_cloud, PointCloud};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
 use crate::util::{c_enum, mat4_ptr, opt_ptr, to_i32};
 
-c_enum! {
-    /// Which vertex attributes the smoothing filters touch (`O3D_FILTER_SCOPE_*`).
-    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-    pub enum FilterScope("filter scope") {
-        /// Positions, normals and colors (Open3D's default).
-        #[default]
-        All = sys::O3D_FILTER_SCOPE_ALL,
-        /// Colors only.
-        Color = sys::O3D_FILTER_SCOPE_COLOR,
-        /// Normals only.
-        Normal = sys::O3D_FILTER_SCOPE_NORMAL,
-        /// Positions only.
-        Vertex = sys::O3D_FILTER_SCOPE_VERTEX,
-    }
-}
-
-c_enum! {
-    /// How vertex clustering places a cluster's vertex (`O3D_SIMPLIFICATION_*`).
-    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-    pub enum SimplificationContraction("contraction") {
-        /// The mean of the cluster (Open3D's default).
-        #[default]
-        Average = sys::O3D_SIMPLIFICATION_AVERAGE,
-        /// The point minimising the quadric error.
-        Quadric = sys::O3D_SIMPLIFICATION_QUADRIC,
-    }
-}
+include!("generated/trianglemesh_ops.rs");
 
 /// Edge-connected triangle clusters ([`TriangleMesh::cluster_connected_triangles`]).
 #[derive(Debug, Clone, Default, PartialEq)]

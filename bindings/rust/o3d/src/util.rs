@@ -163,18 +163,29 @@ c_fields! {
     Option<u64> => (i32, u64): |s, _| Ok((s.is_some() as i32, s.unwrap_or(0))), |(use_seed, seed)| (use_seed != 0).then_some(seed);
 }
 
-/// A row-major R x R matrix as the C API's `R * R` contiguous doubles (`N` must be `R * R`).
-impl<const R: usize, const N: usize> CField<[f64; N]> for [[f64; R]; R] {
+/// A fixed-size C array (`double x[N]`) as the same Rust array.
+impl<const N: usize> CField<[f64; N]> for [f64; N] {
+    fn to_c(&self, _: &str) -> Result<[f64; N]> {
+        Ok(*self)
+    }
+    fn from_c(c: [f64; N]) -> Result<Self> {
+        Ok(c)
+    }
+}
+
+/// A row-major R x C matrix (a 4x4 transform, four lights' RGB) as the C API's `R * C` contiguous doubles
+/// (`N` must be `R * C`).
+impl<const R: usize, const C: usize, const N: usize> CField<[f64; N]> for [[f64; C]; R] {
     fn to_c(&self, _: &str) -> Result<[f64; N]> {
         let mut out = [0.0; N];
-        for (chunk, row) in out.chunks_exact_mut(R).zip(self) {
+        for (chunk, row) in out.chunks_exact_mut(C).zip(self) {
             chunk.copy_from_slice(row);
         }
         Ok(out)
     }
     fn from_c(c: [f64; N]) -> Result<Self> {
-        let mut m = [[0.0; R]; R];
-        for (row, chunk) in m.iter_mut().zip(c.chunks_exact(R)) {
+        let mut m = [[0.0; C]; R];
+        for (row, chunk) in m.iter_mut().zip(c.chunks_exact(C)) {
             row.copy_from_slice(chunk);
         }
         Ok(m)
@@ -191,7 +202,8 @@ pub(crate) use c_place;
 /// An options type over a versioned C struct: the struct with its documented public fields, each
 /// mapped to C field(s) through [`CField`]; `Default` and `library_defaults` are what the C
 /// `*_init` function writes; crate-private `raw_default` / `to_raw` (the init's struct with the
-/// fields set) / `from_raw`.
+/// fields set) / `from_raw`. Its invocations (and `c_enum!`'s) are generated from the C headers into
+/// src/generated/ by tools/gen_binding_tables.py.
 macro_rules! options {
     ($(#[$doc:meta])* pub struct $name:ident($raw:ty, $init:path) {
         $($(#[$fdoc:meta])* pub $field:ident: $ty:ty = $c:tt,)+

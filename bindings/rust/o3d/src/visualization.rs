@@ -23,135 +23,12 @@ use crate::io::{c_path, c_string};
 use crate::lineset::LineSet;
 use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
-use crate::util::{c_enum, handle, mat4_ptr, options, CField};
+use crate::util::{c_enum, handle, mat4_ptr, options};
 use crate::voxelgrid::VoxelGrid;
 
-c_enum! {
-    /// Where the renderer's OpenGL context comes from (`O3D_RENDER_BACKEND_*`).
-    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-    pub enum RenderBackend("render backend") {
-        /// EGL when it works, else a hidden GLFW window.
-        #[default]
-        Auto = sys::O3D_RENDER_BACKEND_AUTO,
-        /// Headless EGL only (Mesa's surfaceless platform where there is no GPU).
-        Egl = sys::O3D_RENDER_BACKEND_EGL,
-        /// A hidden GLFW window only (needs a display; create and use the renderer on the main thread).
-        Glfw = sys::O3D_RENDER_BACKEND_GLFW,
-    }
-}
+pub use crate::visualizer::{KeyAction, KeyCallback, MouseButton, View, Visualizer};
 
-c_enum! {
-    /// RenderOption.mesh_shade_option (`O3D_MESH_SHADE_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum MeshShadeOption("mesh shade option") {
-        /// One normal per triangle.
-        Flat = sys::O3D_MESH_SHADE_FLAT,
-        /// The vertex normals (flat where the mesh has none).
-        Smooth = sys::O3D_MESH_SHADE_SMOOTH,
-    }
-}
-
-c_enum! {
-    /// RenderOption.point_color_option and mesh_color_option (`O3D_COLOR_OPTION_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum ColorOption("color option") {
-        /// Points: their colors, else a Jet map of z; meshes: `default_mesh_color`.
-        Default = sys::O3D_COLOR_OPTION_DEFAULT,
-        /// Their colors, else as `Default`.
-        Color = sys::O3D_COLOR_OPTION_COLOR,
-        /// Jet color map of x over the scene's box.
-        XCoordinate = sys::O3D_COLOR_OPTION_X,
-        /// Jet color map of y over the scene's box.
-        YCoordinate = sys::O3D_COLOR_OPTION_Y,
-        /// Jet color map of z over the scene's box.
-        ZCoordinate = sys::O3D_COLOR_OPTION_Z,
-        /// normal * 0.5 + 0.5 (black without normals).
-        Normal = sys::O3D_COLOR_OPTION_NORMAL,
-    }
-}
-
-c_enum! {
-    /// A material's shader (`O3D_SHADER_*`).
-    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-    pub enum Shader("shader") {
-        /// "defaultLit": the RenderOption's lights (when `light_on`).
-        DefaultLit = sys::O3D_SHADER_DEFAULT_LIT,
-        /// "defaultUnlit": colors as they are.
-        DefaultUnlit = sys::O3D_SHADER_DEFAULT_UNLIT,
-    }
-}
-
-// The option structs hold fixed-size arrays: a C `double[N]` is a Rust `[f64; N]`, and the four lights'
-// positions and colors (`double[12]`) are four rows of three.
-impl<const N: usize> CField<[f64; N]> for [f64; N] {
-    fn to_c(&self, _: &str) -> Result<[f64; N]> {
-        Ok(*self)
-    }
-    fn from_c(c: [f64; N]) -> Result<Self> {
-        Ok(c)
-    }
-}
-
-impl CField<[f64; 12]> for [[f64; 3]; 4] {
-    fn to_c(&self, _: &str) -> Result<[f64; 12]> {
-        let mut out = [0.0; 12];
-        for (chunk, row) in out.chunks_exact_mut(3).zip(self) {
-            chunk.copy_from_slice(row);
-        }
-        Ok(out)
-    }
-    fn from_c(c: [f64; 12]) -> Result<Self> {
-        let mut rows = [[0.0; 3]; 4];
-        for (row, chunk) in rows.iter_mut().zip(c.chunks_exact(3)) {
-            row.copy_from_slice(chunk);
-        }
-        Ok(rows)
-    }
-}
-
-options! {
-    /// o3d.visualization.RenderOption; `Default` is the library's (`o3d_render_option_init`, Open3D's:
-    /// white background, point size 5, lights on). Light `i` sits at
-    /// `center + extent * (p[0] * right + p[1] * up + p[2] * front)` of the scene's box, in the camera's
-    /// frame, with `p = light_position[i]`.
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct RenderOption(sys::o3d_render_option_t, sys::o3d_render_option_init) {
-        /// RGB in `[0, 1]` (default white).
-        pub background_color: [f64; 3] = background_color,
-        /// Pixels, in `[1, 25]` (default 5).
-        pub point_size: f64 = point_size,
-        /// Pixels, in `[1, 10]` (default 1).
-        pub line_width: f64 = line_width,
-        /// Lit shading (default true).
-        pub light_on: bool = light_on,
-        /// Draw each point's normal as a line (default false).
-        pub point_show_normal: bool = point_show_normal,
-        /// Draw triangle edges over the faces (default false).
-        pub mesh_show_wireframe: bool = mesh_show_wireframe,
-        /// Draw triangles seen from behind (default false: culled).
-        pub mesh_show_back_face: bool = mesh_show_back_face,
-        /// Default `Flat`.
-        pub mesh_shade_option: MeshShadeOption = mesh_shade_option,
-        /// Default `Default`.
-        pub point_color_option: ColorOption = point_color_option,
-        /// Default `Color`.
-        pub mesh_color_option: ColorOption = mesh_color_option,
-        /// Default 0.7 gray.
-        pub default_mesh_color: [f64; 3] = default_mesh_color,
-        /// Default black.
-        pub light_ambient_color: [f64; 3] = light_ambient_color,
-        /// Four lights, relative to the scene's box (default (0,0,2) twice, (0,0,-2) twice).
-        pub light_position: [[f64; 3]; 4] = light_position,
-        /// Four RGB colors (default white).
-        pub light_color: [[f64; 3]; 4] = light_color,
-        /// Default 0.66 each.
-        pub light_diffuse_power: [f64; 4] = light_diffuse_power,
-        /// Default 0.2 each.
-        pub light_specular_power: [f64; 4] = light_specular_power,
-        /// Default 100 each.
-        pub light_specular_shininess: [f64; 4] = light_specular_shininess,
-    }
-}
+include!("generated/visualization.rs");
 
 impl RenderOption {
     /// RenderOption.load_from_json: the fields present in an Open3D RenderOption JSON file replace
@@ -174,21 +51,6 @@ impl RenderOption {
     }
 }
 
-options! {
-    /// How one geometry is drawn (a subset of rendering.MaterialRecord); `Default` is the library's
-    /// (`o3d_render_material_init`: lit, white tint, the RenderOption's sizes).
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    pub struct RenderMaterial(sys::o3d_render_material_t, sys::o3d_render_material_init) {
-        /// Default `DefaultLit`.
-        pub shader: Shader = shader,
-        /// Multiplies the geometry's colors (RGBA; alpha unused); default white.
-        pub base_color: [f64; 4] = base_color,
-        /// Pixels; 0 (default) = the RenderOption's.
-        pub point_size: f64 = point_size,
-        /// Pixels; 0 (default) = the RenderOption's.
-        pub line_width: f64 = line_width,
-    }
-}
 
 impl RenderMaterial {
     /// The defaults with `shader`, e.g. `RenderMaterial::with_shader(Shader::DefaultUnlit)`.
@@ -201,8 +63,9 @@ mod sealed {
     pub trait Sealed {}
 }
 
-/// A geometry an [`OffscreenRenderer`] draws: [`PointCloud`], [`TriangleMesh`], [`LineSet`] or
-/// [`VoxelGrid`] (sealed: each maps to its `o3d_offscreen_renderer_add_*`).
+/// A geometry an [`OffscreenRenderer`] or a [`Visualizer`] draws: [`PointCloud`], [`TriangleMesh`],
+/// [`LineSet`] or [`VoxelGrid`] (sealed: each maps to its `o3d_offscreen_renderer_add_*` and
+/// `o3d_visualizer_add_*`).
 pub trait Drawable: sealed::Sealed {
     /// Call the C function adding a copy of `self`.
     ///
@@ -215,10 +78,16 @@ pub trait Drawable: sealed::Sealed {
         name: *const c_char,
         material: *const sys::o3d_render_material_t,
     ) -> sys::o3d_status;
+    /// Call the C function adding a copy of `self` to a visualizer.
+    ///
+    /// # Safety
+    /// `vis` must be a valid visualizer and `name` a NUL-terminated string.
+    #[doc(hidden)]
+    unsafe fn show_in(&self, vis: *mut sys::o3d_visualizer_t, name: *const c_char, reset: i32) -> sys::o3d_status;
 }
 
 macro_rules! drawable {
-    ($($ty:ty => $add:path,)+) => {$(
+    ($($ty:ty => $add:path, $show:path;)+) => {$(
         impl sealed::Sealed for $ty {}
         impl Drawable for $ty {
             unsafe fn add_to(
@@ -230,14 +99,18 @@ macro_rules! drawable {
                 // SAFETY: the caller's contract, and a valid geometry handle.
                 unsafe { $add(renderer, name, self.as_raw(), material) }
             }
+            unsafe fn show_in(&self, vis: *mut sys::o3d_visualizer_t, name: *const c_char, reset: i32) -> sys::o3d_status {
+                // SAFETY: the caller's contract, and a valid geometry handle.
+                unsafe { $show(vis, name, self.as_raw(), reset) }
+            }
         }
     )+};
 }
 drawable! {
-    PointCloud => sys::o3d_offscreen_renderer_add_pointcloud,
-    TriangleMesh => sys::o3d_offscreen_renderer_add_trianglemesh,
-    LineSet => sys::o3d_offscreen_renderer_add_lineset,
-    VoxelGrid => sys::o3d_offscreen_renderer_add_voxelgrid,
+    PointCloud => sys::o3d_offscreen_renderer_add_pointcloud, sys::o3d_visualizer_add_pointcloud;
+    TriangleMesh => sys::o3d_offscreen_renderer_add_trianglemesh, sys::o3d_visualizer_add_trianglemesh;
+    LineSet => sys::o3d_offscreen_renderer_add_lineset, sys::o3d_visualizer_add_lineset;
+    VoxelGrid => sys::o3d_offscreen_renderer_add_voxelgrid, sys::o3d_visualizer_add_voxelgrid;
 }
 
 handle! {

@@ -182,8 +182,9 @@ void Visualizer::run() {
     }
     while (poll_events()) {
         if (animation_) {
+            const AnimationCallback callback = animation_;  // a copy: the callback may replace itself
             CallbackScope scope(callback_depth_);
-            if (animation_(*this)) redraw_ = true;
+            if (callback(*this)) redraw_ = true;
         } else {
             glfw().wait_events_timeout(0.1);
         }

@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file visualizer.hpp
+/// @brief o3dpp::Visualizer: the viewer (o3d.visualization.Visualizer, VisualizerWithKeyCallback,
+/// VisualizerWithEditing and its ViewControl) over o3d/visualizer.h. A hidden window (`visible` false)
+/// renders through EGL, so it captures images and takes keys and mouse events on a headless machine.
+/// Callbacks are std::function; one that throws stops the loop, and run() (or the poll or send call that
+/// ran it) rethrows the original exception.
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "o3d/visualizer.h"
+#include "o3dpp/visualization.hpp"
+
+namespace o3dpp {
+
+/// @brief ViewControl's view: the eye looks at `lookat` from the direction `front`, `zoom` (in [0.02, 2])
+/// times the view box's largest extent away in units of the field of view.
+struct View {
+    Vec3 front{0, 0, 1}, lookat{0, 0, 0}, up{0, 1, 0};
+    double zoom = 0.7;
+};
+
+/// @brief o3d.visualization.Visualizer. Move-only; belongs to the thread that created its window.
+class Visualizer : public Owner<Visualizer, o3d_visualizer_t, &o3d_visualizer_destroy> {
+public:
+    /// @brief Returns true when the geometry or the view changed.
+    using AnimationCallback = std::function<bool(Visualizer&)>;
+    /// @brief (visualizer, action, O3D_KEY_MOD_* bits); returns true when the geometry or the view changed.
+    using KeyCallback = std::function<bool(Visualizer&, KeyAction, int mods)>;
+
+    /// @brief A visualizer without a window; `editing`: VisualizerWithEditing (Shift + click picks).
+    explicit Visualizer(bool editing = false)
+        : Owner(make([&](o3d_visualizer_t** out) { return o3d_visualizer_create(out, editing ? 1 : 0); })),
+          state_(std::make_unique<State>()) {
+        state_->owner = this;
+    }
+    // The callbacks reach the owner through state_->owner, which follows the object when it moves.
+    Visualizer(Visualizer&& other) noexcept : Owner(std::move(other)), state_(std::move(other.state_)) {
+        if (state_) state_->owner = this;
+    }
+    Visualizer& operator=(Visualizer&& other) noexcept {
+        Owner::operator=(std::move(other));
+        state_ = std::move(other.state_);
+        if (state_) state_->owner = this;
+        return *this;
+    }
+    ~Visualizer() = default;
+
+    /// @brief Open3D's defaults are 1920 x 1080, visible; negative left/top: the window manager's place.
+    Visualizer& create_window(const std::string& name = "o3d", int width = 1920, int height = 1080, int left = -1,
+                              int top = -1, bool visible = true) {
+        return done(o3d_visualizer_create_window(get(), name.c_str(), width, height, left, top, visible ? 1 : 0));
+    }
+    Visualizer& destroy_window() { return done(o3d_visualizer_destroy_window(get())); }
+
+    // ---- the scene: geometries are copied; adding under a taken name replaces it (update_geometry) ----
+    Visualizer& add(const std::string& name, const PointCloud& g, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_add_pointcloud(get(), name.c_str(), g.get(), reset_bounding_box));
+    }
+    Visualizer& add(const std::string& name, const TriangleMesh& g, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_add_trianglemesh(get(), name.c_str(), g.get(), reset_bounding_box));
+    }
+    Visualizer& add(const std::string& name, const LineSet& g, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_add_lineset(get(), name.c_str(), g.get(), reset_bounding_box));
+    }
+    Visualizer& add(const std::string& name, const VoxelGrid& g, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_add_voxelgrid(get(), name.c_str(), g.get(), reset_bounding_box));
+    }
+    /// @brief An image, shown flat under the 3D geometry and scaled to fit (it does not change the view box).
+    Visualizer& add(const std::string& name, const Image& g, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_add_image(get(), name.c_str(), g.get(), reset_bounding_box));
+    }
+    Visualizer& remove(const std::string& name, bool reset_bounding_box = true) {
+        return done(o3d_visualizer_remove_geometry(get(), name.c_str(), reset_bounding_box));
+    }
+    Visualizer& clear() { return done(o3d_visualizer_clear_geometries(get())); }
+    bool has(const std::string& name) {
+        int32_t out = 0;
+        check(o3d_visualizer_has_geometry(&out, get(), name.c_str()));
+        return out != 0;
+    }
+    RenderOption render_option() {
+        o3d_render_option_t c = RenderOption::library_defaults();
+        check(o3d_visualizer_get_render_option(&c, get()));
+        return RenderOption::from_c(c);
+    }
+    Visualizer& set_render_option(const RenderOption& option) {
+        const o3d_render_option_t c = option.to_c();
+        return done(o3d_visualizer_set_render_option(get(), &c));
+    }
+
+    // ---- the loop and callbacks ----
+    /// @brief Handle the window's events; false once it was closed.
+    bool poll_events() {
+        int32_t open = 0;
+        ran(o3d_visualizer_poll_events(&open, get()));
+        return open != 0;
+    }
+    Visualizer& update_renderer() { return done(o3d_visualizer_update_renderer(get())); }
+    /// @brief Until the window closes (a hidden one without an animation callback: one frame).
+    Visualizer& run() { return ran(o3d_visualizer_run(get())); }
+    Visualizer& close() { return done(o3d_visualizer_close(get())); }
+    /// @brief Called once per loop of run (replaces the previous one; empty removes it).
+    Visualizer& register_animation_callback(AnimationCallback callback) {
+        auto next = callback ? std::make_shared<AnimationCallback>(std::move(callback)) : nullptr;
+        done(o3d_visualizer_register_animation_callback(get(), next ? &animation_trampoline : nullptr, state_.get()));
+        state_->animation = std::move(next);
+        return *this;
+    }
+    /// @brief Called on press and repeat of `key` (GLFW's number: 'K', O3D_KEY_*) instead of its binding.
+    Visualizer& register_key_callback(int key, KeyCallback callback) {
+        return register_key(key, std::move(callback), &o3d_visualizer_register_key_callback);
+    }
+    /// @brief As register_key_callback, and also on release.
+    Visualizer& register_key_action_callback(int key, KeyCallback callback) {
+        return register_key(key, std::move(callback), &o3d_visualizer_register_key_action_callback);
+    }
+
+    // ---- input, as the window delivers it ----
+    Visualizer& send_key(int key, KeyAction action, int mods = 0) {
+        return ran(o3d_visualizer_send_key(get(), key, static_cast<int32_t>(action), mods));
+    }
+    Visualizer& send_mouse_move(double x, double y) { return ran(o3d_visualizer_send_mouse_move(get(), x, y)); }
+    Visualizer& send_mouse_button(MouseButton button, KeyAction action, int mods = 0) {
+        return ran(o3d_visualizer_send_mouse_button(get(), static_cast<int32_t>(button), static_cast<int32_t>(action),
+                                                    mods));
+    }
+    Visualizer& send_scroll(double dx, double dy) { return ran(o3d_visualizer_send_scroll(get(), dx, dy)); }
+
+    // ---- captures (a frame is drawn for each) ----
+    /// @brief RGB float32 in [0, 1].
+    Image capture_screen_float_buffer() {
+        return Image::adopt([&](o3d_image_t** o) { return o3d_visualizer_capture_screen_float_buffer(o, get(), 1); });
+    }
+    /// @brief float32 metres along the optical axis, 0 where nothing was drawn.
+    Image capture_depth_float_buffer() {
+        return Image::adopt([&](o3d_image_t** o) { return o3d_visualizer_capture_depth_float_buffer(o, get(), 1); });
+    }
+    /// @brief 8-bit RGB PNG or JPEG (by extension).
+    Visualizer& capture_screen_image(const std::string& path) {
+        return done(o3d_visualizer_capture_screen_image(get(), path.c_str(), 1));
+    }
+    /// @brief depth * depth_scale as a 16-bit PNG (1000: millimetres).
+    Visualizer& capture_depth_image(const std::string& path, double depth_scale = 1000.0) {
+        return done(o3d_visualizer_capture_depth_image(get(), path.c_str(), 1, depth_scale));
+    }
+    /// @brief Editing: vertex indices of the first geometry added, in pick order.
+    std::vector<int32_t> picked_points() const { return copy_out<int32_t>(&o3d_visualizer_get_picked_points); }
+
+    // ---- ViewControl ----
+    Visualizer& rotate(double x, double y) { return done(o3d_visualizer_view_rotate(get(), x, y)); }
+    Visualizer& translate(double x, double y) { return done(o3d_visualizer_view_translate(get(), x, y)); }
+    Visualizer& scale(double steps) { return done(o3d_visualizer_view_scale(get(), steps)); }
+    Visualizer& change_field_of_view(double step = 0.45) {
+        return done(o3d_visualizer_view_change_field_of_view(get(), step));
+    }
+    double field_of_view() {
+        double out = 0;
+        check(o3d_visualizer_view_get_field_of_view(&out, get()));
+        return out;
+    }
+    View view() {
+        View v;
+        check(o3d_visualizer_view_get(v.front.data(), v.lookat.data(), v.up.data(), &v.zoom, get()));
+        return v;
+    }
+    /// @brief set_front / set_lookat / set_up / set_zoom at once (on error the view is unchanged).
+    Visualizer& set_view(const View& v) {
+        return done(o3d_visualizer_view_set(get(), v.front.data(), v.lookat.data(), v.up.data(), v.zoom));
+    }
+    /// @brief Open3D's default view of the scene (the R key).
+    Visualizer& reset_view() { return done(o3d_visualizer_view_reset(get())); }
+    PinholeCameraParameters to_pinhole() {
+        PinholeCameraParameters p;
+        check(o3d_visualizer_view_to_pinhole(&p.intrinsic, p.extrinsic.data(), get()));
+        return p;
+    }
+    /// @brief The same camera gives the same image (window size, centred principal point, fx = fy).
+    Visualizer& from_pinhole(const PinholeCameraParameters& p) {
+        return done(o3d_visualizer_view_from_pinhole(get(), &p.intrinsic, p.extrinsic.data()));
+    }
+    /// @brief The view as Open3D's ViewTrajectory JSON (what Ctrl+C copies).
+    std::string view_status() {
+        return Buffer::adopt([&](o3d_buffer_t** o) { return o3d_visualizer_get_view_status(o, get()); }).to_string();
+    }
+    Visualizer& set_view_status(const std::string& json) {
+        return done(o3d_visualizer_set_view_status(get(), json.c_str()));
+    }
+    /// @brief Play a ViewTrajectory JSON file, writing image_%06d.png (and depth_%06d.png) into
+    /// `capture_dir` unless it is empty; `progress` after each frame may return false to stop.
+    Visualizer& play_view_trajectory(const std::string& path, const std::string& capture_dir = "",
+                                     bool capture_depth = false, const ProgressCallback& progress = {}) {
+        detail::ProgressContext ctx{progress ? &progress : nullptr, nullptr};
+        const o3d_status status = o3d_visualizer_play_view_trajectory(
+            get(), path.c_str(), capture_dir.empty() ? nullptr : capture_dir.c_str(), capture_depth ? 1 : 0,
+            progress ? &detail::progress_trampoline : nullptr, &ctx);
+        if (ctx.error) std::rethrow_exception(ctx.error);
+        return done(status);
+    }
+
+private:
+    struct State;
+    // A registered callback: shared, so that one replaced while it runs lives until it returns.
+    template <typename F>
+    struct Slot {
+        State* state = nullptr;
+        std::shared_ptr<F> fn;
+    };
+    // Heap state the trampolines reach through user_data: stays put when the Visualizer moves.
+    struct State {
+        Visualizer* owner = nullptr;
+        std::exception_ptr error;  // what a callback threw, rethrown when the C call returns
+        std::shared_ptr<AnimationCallback> animation;
+        std::map<int, Slot<KeyCallback>> keys;  // map nodes stay put: their address is the key's user_data
+    };
+
+    // Run a callback: an exception is kept for the caller and reported to the loop, which then stops.
+    template <typename Call>
+    static int32_t invoke(o3d_visualizer_t* vis, State* state, Call&& call) noexcept {
+        try {
+            return call(*state->owner) ? 1 : 0;
+        } catch (const std::exception& e) {
+            return failed(vis, state, e.what());
+        } catch (...) {
+            return failed(vis, state, "a callback threw");
+        }
+    }
+    static int32_t failed(o3d_visualizer_t* vis, State* state, const char* what) noexcept {
+        state->error = std::current_exception();  // called from a handler: the exception being handled
+        o3d_visualizer_set_callback_error(vis, what);
+        return 0;
+    }
+    static int32_t animation_trampoline(o3d_visualizer_t* vis, void* user_data) noexcept {
+        auto* state = static_cast<State*>(user_data);
+        const std::shared_ptr<AnimationCallback> fn = state->animation;
+        return invoke(vis, state, [&](Visualizer& v) { return (*fn)(v); });
+    }
+    static int32_t key_trampoline(o3d_visualizer_t* vis, int32_t action, int32_t mods, void* user_data) noexcept {
+        auto* slot = static_cast<Slot<KeyCallback>*>(user_data);
+        const std::shared_ptr<KeyCallback> fn = slot->fn;
+        return invoke(vis, slot->state, [&](Visualizer& v) { return (*fn)(v, static_cast<KeyAction>(action), mods); });
+    }
+    template <typename Register>
+    Visualizer& register_key(int key, KeyCallback callback, Register reg) {
+        auto next = callback ? std::make_shared<KeyCallback>(std::move(callback)) : nullptr;
+        Slot<KeyCallback>& slot = state_->keys[key];
+        slot.state = state_.get();
+        done(reg(get(), key, next ? &key_trampoline : nullptr, &slot));
+        slot.fn = std::move(next);
+        return *this;
+    }
+    // Check a call that may have run callbacks: a callback's exception first (the status is then
+    // O3D_ERROR_CANCELLED), else the status.
+    Visualizer& ran(o3d_status status) {
+        if (state_ && state_->error) std::rethrow_exception(std::exchange(state_->error, nullptr));
+        return done(status);
+    }
+
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace o3dpp

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's pictures, rendered by o3d itself (offscreen, no display): runs the demo and keeps the PNGs it
-# writes in docs/images/. Usage: tools/make_readme_pictures.sh [python with o3d installed, default .venv/bin/python]
+# writes in docs/images/, and a frame of Figure 2 (examples/python/figure2.py).
+# Usage: tools/make_readme_pictures.sh [python with o3d installed, default .venv/bin/python]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PY=${1:-.venv/bin/python}
@@ -9,4 +10,11 @@ trap 'rm -rf "$out"' EXIT
 "$PY" examples/demo/demo.py "$out" >/dev/null
 mkdir -p docs/images
 cp "$out"/*.png docs/images/
+# Figure 2 (a cloud and a mesh in the viewer, a hidden window): needs Open3D's test data.
+data=${O3D_TEST_DATA:-../shared/data}
+if [ -f "$data/open3d/Feature/cloud_bin_0.pcd" ]; then
+  "$PY" examples/python/figure2.py "$data/open3d/Feature/cloud_bin_0.pcd" "$data/open3d/knot.ply" \
+      --frames 1 --out "$out/figure2" >/dev/null
+  cp "$out/figure2/frame_000.png" docs/images/figure2.png
+fi
 ls -l docs/images/*.png

@@ -83,6 +83,16 @@ def _doc_before(raw, pos):
     return _clean_doc(block[3:-2])
 
 
+def _brief_before(raw, pos):
+    """The first paragraph of the `@brief` of the doc comment ending right before `pos`, or None."""
+    head = raw[:pos].rstrip()
+    if not head.endswith("*/") or not head[head.rfind("/*"):].startswith("/**"):
+        return None
+    block = head[head.rfind("/*") + 3:-2]
+    m = re.search(r"@brief\s(.*?)(?:\n\s*\*?\s*\n|\n\s*\*\s*@|$)", block, re.S)
+    return _clean_doc(m.group(1)) if m else None
+
+
 def _mask_comments(text):
     """`text` with each comment blanked (offsets kept)."""
     return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
@@ -132,9 +142,10 @@ def load(include_dir=INCLUDE_DIR):
     for header in sorted(include_dir.glob("*.h")):
         raw = header.read_text()
         text = _COMMENT.sub("", raw)
-        for ret, name, args in _PROTO.findall(text):
-            model["functions"].append(
-                {"name": name, "header": header.name, "ret": " ".join(ret.split()), "params": _params(args)})
+        for m in _PROTO.finditer(_mask_comments(raw)):
+            ret, name, args = m.groups()
+            model["functions"].append({"name": name, "header": header.name, "ret": " ".join(ret.split()),
+                                       "params": _params(args), "brief": _brief_before(raw, m.start())})
         for m in _STRUCT.finditer(raw):
             tag, body, name = m.groups()
             fields = [_param(f) for f in _COMMENT.sub("", body).split(";") if f.strip()]

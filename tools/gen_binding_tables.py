@@ -8,8 +8,11 @@ Regenerate after any change to capi/include/o3d/*.h that touches a constant grou
 their doc comments. What it writes (first line `@generated ...`; never edit them by hand):
   bindings/cpp/include/o3dpp/generated/enums.hpp    an `enum class` per constant group
   bindings/cpp/include/o3dpp/generated/options.hpp  the option structs over o3dpp::COptions
+  bindings/cpp/include/o3dpp/generated/<header>.hpp detail::<Class>Calls, a base giving a class its pass-through
+                                                    methods (tools/binding_methods.py; CPP_METHODS)
   bindings/python/src/generated/tables.h            py::enum_ definitions and per-struct field tables
-  bindings/rust/o3d/src/generated/<module>.rs        c_enum!/options! invocations, include!d by src/<module>.rs
+  bindings/rust/o3d/src/generated/<module>.rs        c_enum!/options! invocations and `impl` blocks of pass-through
+                                                    methods (RUST_METHODS), include!d by src/<module>.rs
 
 What the headers say, and how each language shows it:
   * a constant group is a value typedef followed by its #defines (`typedef int32_t o3d_shader;` +
@@ -29,6 +32,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import binding_methods  # noqa: E402
 import capi_model  # noqa: E402
 
 ROOT = capi_model.ROOT
@@ -63,7 +67,7 @@ RUST_MODULES = {  # default: the header's name (common.h -> lib)
     "o3d_mesh_read_options_t": "io_geometry", "o3d_mesh_write_options_t": "io_geometry",
     "o3d_depth_to_cloud_options_t": "rgbd", "o3d_ransac_options_t": "registration_global",
     "o3d_fgr_options_t": "registration_global", "o3d_simplification_contraction": "trianglemesh_ops",
-    "o3d_filter_scope": "trianglemesh_ops",
+    "o3d_filter_scope": "trianglemesh_ops", "o3d_trianglemesh_t": "trianglemesh_ops",
 }
 RUST_SUBSETS = {"o3d_mesh_array": (("O3D_MESH_VERTICES", "O3D_MESH_VERTEX_NORMALS", "O3D_MESH_VERTEX_COLORS",
                                     "O3D_MESH_TRIANGLE_NORMALS"), "the float64 ones with three values per row")}
@@ -89,6 +93,65 @@ PY_FIELD_ENUMS = {"point_color_option": "PointColorOption", "mesh_color_option":
 PY_OMIT = {"o3d_fgr_options_t": {"num_threads"},
            "o3d_render_option_t": {"light_position", "light_color", "light_diffuse_power", "light_specular_power",
                                    "light_specular_shininess"}}
+
+# ---- pass-through methods (tools/binding_methods.py): the handles' classes and the functions each shows ----
+HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh"}  # the class of a handle parameter (default: camel case)
+RBB = {"reset_bounding_box": "true"}
+# C function -> (C++ method name or None for the derived one, {parameter: default argument}).
+CPP_METHODS = {
+    "o3d_visualizer_create_window": (None, {"window_name": '"o3d"', "width": "1920", "height": "1080", "left": "-1",
+                                            "top": "-1", "visible": "true"}),
+    "o3d_visualizer_destroy_window": (None, {}), "o3d_visualizer_add_pointcloud": ("add", RBB),
+    "o3d_visualizer_add_trianglemesh": ("add", RBB), "o3d_visualizer_add_lineset": ("add", RBB),
+    "o3d_visualizer_add_voxelgrid": ("add", RBB), "o3d_visualizer_add_image": ("add", RBB),
+    "o3d_visualizer_remove_geometry": ("remove", RBB), "o3d_visualizer_clear_geometries": ("clear", {}),
+    "o3d_visualizer_has_geometry": ("has", {}), "o3d_visualizer_poll_events": (None, {}),
+    "o3d_visualizer_update_renderer": (None, {}), "o3d_visualizer_run": (None, {}), "o3d_visualizer_close": (None, {}),
+    "o3d_visualizer_send_key": (None, {"mods": "0"}), "o3d_visualizer_send_mouse_move": (None, {}),
+    "o3d_visualizer_send_mouse_button": (None, {"mods": "0"}), "o3d_visualizer_send_scroll": (None, {}),
+    "o3d_visualizer_capture_screen_image": (None, {}),
+    "o3d_visualizer_capture_depth_image": (None, {"depth_scale": "1000.0"}),
+    "o3d_visualizer_view_rotate": (None, {}), "o3d_visualizer_view_translate": (None, {}),
+    "o3d_visualizer_view_scale": (None, {}), "o3d_visualizer_view_change_field_of_view": (None, {"step": "0.45"}),
+    "o3d_visualizer_view_get_field_of_view": (None, {}), "o3d_visualizer_view_reset": ("reset_view", {}),
+    "o3d_visualizer_set_view_status": (None, {}),
+    "o3d_offscreen_renderer_has_geometry": ("has", {}), "o3d_offscreen_renderer_remove_geometry": ("remove", {}),
+    "o3d_offscreen_renderer_clear_geometries": ("clear", {}),
+    "o3d_offscreen_renderer_setup_camera_lookat": (None, {"zoom": "0.7"}),
+    "o3d_offscreen_renderer_setup_camera_fov": ("setup_camera", {}),
+}
+# handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run)
+CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/visualization.hpp"]),
+               "o3d_offscreen_renderer_t": ("OffscreenRenderer", "visualization", "done", ["o3dpp/span.hpp"])}
+# C function -> Rust method name (None: the derived one).
+RUST_METHODS = {
+    "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,
+    "o3d_visualizer_remove_geometry": None, "o3d_visualizer_clear_geometries": None,
+    "o3d_visualizer_has_geometry": None, "o3d_visualizer_poll_events": None, "o3d_visualizer_update_renderer": None,
+    "o3d_visualizer_run": None, "o3d_visualizer_close": None, "o3d_visualizer_send_key": None,
+    "o3d_visualizer_send_mouse_move": None, "o3d_visualizer_send_mouse_button": None,
+    "o3d_visualizer_send_scroll": None, "o3d_visualizer_capture_screen_image": None,
+    "o3d_visualizer_capture_depth_image": None, "o3d_visualizer_view_rotate": None,
+    "o3d_visualizer_view_translate": None, "o3d_visualizer_view_scale": None,
+    "o3d_visualizer_view_change_field_of_view": None, "o3d_visualizer_view_get_field_of_view": None,
+    "o3d_visualizer_view_reset": "reset_view", "o3d_visualizer_set_view_status": None,
+    "o3d_offscreen_renderer_has_geometry": None, "o3d_offscreen_renderer_remove_geometry": None,
+    "o3d_offscreen_renderer_clear_geometries": "clear_geometry", "o3d_offscreen_renderer_setup_camera_lookat": None,
+    "o3d_offscreen_renderer_setup_camera_fov": None, "o3d_offscreen_renderer_render_to_png": None,
+    **{f"o3d_trianglemesh_{n}": None for n in (
+        "compute_vertex_normals", "compute_triangle_normals", "normalize_normals", "paint_uniform_color",
+        "remove_duplicated_vertices", "remove_duplicated_triangles", "remove_degenerate_triangles",
+        "remove_unreferenced_vertices", "remove_non_manifold_edges", "merge_close_vertices", "translate")},
+    **{f"o3d_pointcloud_{n}": None for n in (
+        "translate", "paint_uniform_color", "remove_non_finite_points", "normalize_normals")},
+}
+# handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
+# The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
+# callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
+RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False),
+                "o3d_offscreen_renderer_t": ("OffscreenRenderer", "&mut self", "self.raw_mut()", False),
+                "o3d_trianglemesh_t": ("TriangleMesh", "&mut self", "self.raw_mut()", True),
+                "o3d_pointcloud_t": ("PointCloud", "&mut self", "self.raw_mut()", True)}
 
 
 def camel(snake):
@@ -278,6 +341,48 @@ def gen_cpp_options(structs, groups):
     return "\n".join(out)
 
 
+def gen_cpp_methods(model, groups, handle):
+    """generated/<header>.hpp: detail::<Class>Calls<Self>, the base that gives the class its pass-through methods
+    (the class befriends it: the calls check their status with the class's own `done` or `ran`)."""
+    cls, stem, checked, includes = CPP_CLASSES[handle]
+    out = [f"// {HEADER}", "#pragma once", f"/// @file generated/{stem}.hpp",
+           f"/// @brief The pass-through methods of o3dpp::{cls} ({handle}), from their C declarations.",
+           "#include <cstdint>", "#include <string>", "", '#include "o3d/o3d.h"', '#include "o3dpp/generated/enums.hpp"']
+    out += [f'#include "{h}"' for h in includes] + ["", "namespace o3dpp {", "namespace detail {", "",
+            f"/// @brief The methods of {cls} that pass their arguments to one C function.", "template <typename Self>",
+            f"class {cls}Calls {{", "public:"]
+    for m in binding_methods.methods(model, groups, handle, CPP_METHODS):
+        name, defaults = CPP_METHODS[m.c]
+        params, args = [], []
+        for p in m.params:
+            k, n = p["kind"], p["name"]
+            ty, arg = {"int32_t": ("int", n), "double": ("double", n), "bool": ("bool", f"{n} ? 1 : 0"),
+                       "string": ("const std::string&", f"{n}.c_str()"), "path": ("const std::string&", f"{n}.c_str()"),
+                       "array": ({3: "Vec3", 16: "Mat4"}.get(p["array"]) and f"const {({3: 'Vec3', 16: 'Mat4'}[p['array']])}&",
+                                 f"{n}.data()"),
+                       "fixed": (None, binding_methods.FIXED.get(n)),
+                       "enum": (cpp_enum_name(groups.get(p.get("typedef"))) if k == "enum" else None,
+                                f"static_cast<int32_t>({n})"),
+                       "handle": (f"const {type_name(binding_methods.handle_type(p), HANDLE_TYPES)}&", f"{n}.get()")}[k]
+            if ty:
+                params.append(f"{ty} {n}" + (f" = {defaults[n]}" if n in defaults else ""))
+            args.append(arg)
+        call = f"{m.c}(" + ", ".join((["&out"] if m.out else []) + ["self().get()"] + args) + ")"
+        sig = ", ".join(params)
+        out.append(f"    /// @brief {m.brief}")
+        if m.out is None:
+            out += [f"    Self& {name or m.default_name(handle)}({sig}) {{", f"        return self().{checked}({call});",
+                    "    }"]
+        else:
+            ret, init, value = {"bool": ("bool", "int32_t out = 0;", "out != 0"), "int": ("int", "int32_t out = 0;", "out"),
+                                "double": ("double", "double out = 0;", "out")}[m.out_kind]
+            out += [f"    {ret} {name or m.default_name(handle)}({sig}) {{", f"        {init}",
+                    f"        self().{checked}({call});", f"        return {value};", "    }"]
+    out += ["", "private:", "    Self& self() { return static_cast<Self&>(*this); }", "};", "",
+            "}  // namespace detail", "}  // namespace o3dpp", ""]
+    return "\n".join(out)
+
+
 # ---- Python -------------------------------------------------------------------------------------------------
 def py_doc(text):
     """A doc for Python users: without the C constants' names (\"(O3D_SHADER_*)\")."""
@@ -405,7 +510,38 @@ def gen_rust_options(s, groups):
     return out + ["    }", "}"]
 
 
-def gen_rust(structs, groups):
+def gen_rust_methods(model, groups, handle):
+    """An `impl` block of the handle's type with its pass-through methods."""
+    ty, receiver, raw, chain = RUST_CLASSES[handle]
+    out = [f"impl {ty} {{"]
+    for m in binding_methods.methods(model, groups, handle, RUST_METHODS):
+        params, args = [], []
+        for p in m.params:
+            k, n = p["kind"], p["name"]
+            pty, arg = {"int32_t": ("i32", n), "double": ("f64", n), "bool": ("bool", f"i32::from({n})"),
+                        "string": ("&str", f'c_string("{n}", {n})?.as_ptr()'),
+                        "path": ("impl AsRef<Path>", f"c_path({n}.as_ref())?.as_ptr()"),
+                        "array": (f"[f64; {p['array']}]", f"{n}.as_ptr()"),
+                        "fixed": (None, binding_methods.FIXED.get(n)),
+                        "enum": (rust_enum_name(groups.get(p.get("typedef"))) if k == "enum" else None, f"{n}.raw()"),
+                        "handle": (f"&{type_name(binding_methods.handle_type(p), HANDLE_TYPES)}", f"{n}.as_raw()")}[k]
+            if pty:
+                params.append(f"{n}: {pty}")
+            args.append(arg)
+        name = RUST_METHODS[m.c] or m.default_name(handle)
+        call = f"sys::{m.c}(" + ", ".join((["&mut out"] if m.out else []) + [raw] + args) + ")"
+        ret, init, value = {None: ("&mut Self", None, None) if chain else ("()", None, None), "bool": ("bool", "0", "out != 0"), "int": ("i32", "0", "out"),
+                            "double": ("f64", "0.0", "out")}[m.out_kind]
+        out += [f"    /// {rust_doc(m.brief)}", f"    pub fn {name}({receiver}{''.join(', ' + p for p in params)}) -> Result<{ret}> {{"]
+        if init:
+            out.append(f"        let mut out = {init};")
+        out += ["        // SAFETY: a valid handle; pointers to values that live for the call.",
+                f"        check(unsafe {{ {call} }})" + (f".map(|()| {value})" if value else "?;\n        Ok(self)" if chain
+                                                                  else ""), "    }"]
+    return out + ["}"]
+
+
+def gen_rust(structs, groups, model=None):
     modules = {}
     for g in groups.values():
         if g.name not in RUST_SKIP:
@@ -413,6 +549,10 @@ def gen_rust(structs, groups):
     for s in structs:
         if s.name not in RUST_SKIP:
             modules.setdefault(rust_module(s.name, s.header), []).append(gen_rust_options(s, groups))
+    for handle in RUST_CLASSES if model else []:  # in the module of the header declaring its functions
+        header = next(f["header"] for f in model["functions"] if f["name"] in RUST_METHODS
+                      and f["name"].startswith(handle[:-1]))
+        modules.setdefault(rust_module(handle, header), []).append(gen_rust_methods(model, groups, handle))
     files = {}
     for module, blocks in modules.items():
         text = [f"// {HEADER}",
@@ -429,13 +569,14 @@ def rust_module(name, header):
 
 # ---- files ------------------------------------------------------------------------------------------------
 def outputs(include_dir):
-    _, groups, raw_structs = load_model(include_dir)
+    model, groups, raw_structs = load_model(include_dir)
     cpp_structs = [Struct(s, {k: tuple(v[1]) for k, v in CPP_COMPOSITES.items()}) for s in raw_structs]
     rust_structs = [Struct(s, {k: v[1] for k, v in RUST_COMPOSITES.items()}) for s in raw_structs]
     py_structs = [Struct(s, {}) for s in raw_structs]
     files = {CPP_DIR / "enums.hpp": gen_cpp_enums(groups), CPP_DIR / "options.hpp": gen_cpp_options(cpp_structs, groups),
              PY_DIR / "tables.h": gen_python(py_structs, groups)}
-    files.update({RUST_DIR / name: text for name, text in gen_rust(rust_structs, groups).items()})
+    files.update({RUST_DIR / name: text for name, text in gen_rust(rust_structs, groups, model).items()})
+    files.update({CPP_DIR / f"{stem}.hpp": gen_cpp_methods(model, groups, h) for h, (_, stem, _, _) in CPP_CLASSES.items()})
     return files
 
 

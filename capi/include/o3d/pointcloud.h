@@ -195,7 +195,7 @@ O3D_API o3d_status o3d_pointcloud_append(o3d_pointcloud_t* pc, const o3d_pointcl
  */
 O3D_API o3d_status o3d_pointcloud_transform(o3d_pointcloud_t* pc, const double transform[16]);
 /**
- * @brief relative != 0: add `t`; relative == 0: move the center to `t`.
+ * @brief Move the cloud: with `relative`, by `translation`; without, so that its center is at `translation`.
  *
  * Threads: needs exclusive access to `pc`.
  * @param pc the point cloud
@@ -203,7 +203,7 @@ O3D_API o3d_status o3d_pointcloud_transform(o3d_pointcloud_t* pc, const double t
  * @param relative non-zero: add `translation`; 0: move the center there
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_pointcloud_translate(o3d_pointcloud_t* pc, const double translation[3], int32_t relative);
+O3D_API o3d_status o3d_pointcloud_translate(o3d_pointcloud_t* pc, const double translation[3], o3d_bool relative);
 /**
  * @brief Rotate by row-major 3x3 `R` about `center` (NULL: the cloud's center).
  *
@@ -287,7 +287,7 @@ O3D_API o3d_status o3d_pointcloud_paint_uniform_color(o3d_pointcloud_t* pc, cons
 O3D_API o3d_status o3d_pointcloud_select_by_index(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
                                                   const int32_t* indices, size_t n, int32_t invert);
 /**
- * @brief Drop points with a NaN (remove_nan != 0) or an infinite (remove_infinite != 0) coordinate.
+ * @brief Drop points with a NaN (when `remove_nan`) or an infinite (when `remove_infinite`) coordinate.
  *
  * Threads: needs exclusive access to `pc`.
  * @param pc the point cloud
@@ -295,8 +295,8 @@ O3D_API o3d_status o3d_pointcloud_select_by_index(o3d_pointcloud_t** out, const 
  * @param remove_infinite non-zero drops points with an infinite coordinate
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_pointcloud_remove_non_finite_points(o3d_pointcloud_t* pc, int32_t remove_nan,
-                                                           int32_t remove_infinite);
+O3D_API o3d_status o3d_pointcloud_remove_non_finite_points(o3d_pointcloud_t* pc, o3d_bool remove_nan,
+                                                           o3d_bool remove_infinite);
 /**
  * @brief Scale every normal to unit length.
  *

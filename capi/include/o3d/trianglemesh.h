@@ -296,23 +296,23 @@ O3D_API o3d_status o3d_trianglemesh_append(o3d_trianglemesh_t* mesh, const o3d_t
 /* ---- Normals, colors, transforms, bounds (as for point clouds) ---- */
 
 /**
- * @brief Area-weighted vertex normals from the triangle normals (unit length when normalized != 0).
+ * @brief Area-weighted vertex normals from the triangle normals (unit length when `normalized`).
  *
  * Threads: needs exclusive access to `mesh`.
  * @param mesh the mesh
  * @param normalized non-zero scales the normals to unit length
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_trianglemesh_compute_vertex_normals(o3d_trianglemesh_t* mesh, int32_t normalized);
+O3D_API o3d_status o3d_trianglemesh_compute_vertex_normals(o3d_trianglemesh_t* mesh, o3d_bool normalized);
 /**
- * @brief Triangle normals (b - a) x (c - a) (unit length when normalized != 0).
+ * @brief Triangle normals (b - a) x (c - a) (unit length when `normalized`).
  *
  * Threads: needs exclusive access to `mesh`.
  * @param mesh the mesh
  * @param normalized non-zero scales the normals to unit length
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_trianglemesh_compute_triangle_normals(o3d_trianglemesh_t* mesh, int32_t normalized);
+O3D_API o3d_status o3d_trianglemesh_compute_triangle_normals(o3d_trianglemesh_t* mesh, o3d_bool normalized);
 /**
  * @brief Scale vertex and triangle normals to unit length.
  *
@@ -340,7 +340,7 @@ O3D_API o3d_status o3d_trianglemesh_paint_uniform_color(o3d_trianglemesh_t* mesh
  */
 O3D_API o3d_status o3d_trianglemesh_transform(o3d_trianglemesh_t* mesh, const double transform[16]);
 /**
- * @brief relative != 0: add `t`; relative == 0: move the center to `t`.
+ * @brief Move the mesh: with `relative`, by `translation`; without, so that its center is at `translation`.
  *
  * Threads: needs exclusive access to `mesh`.
  * @param mesh the mesh
@@ -349,7 +349,7 @@ O3D_API o3d_status o3d_trianglemesh_transform(o3d_trianglemesh_t* mesh, const do
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_translate(o3d_trianglemesh_t* mesh, const double translation[3],
-                                              int32_t relative);
+                                              o3d_bool relative);
 /**
  * @brief Rotate by row-major 3x3 `R` about `center` (NULL: the mesh's center).
  *

@@ -243,7 +243,7 @@ O3D_API o3d_status o3d_offscreen_renderer_add_voxelgrid(o3d_offscreen_renderer_t
  * @param name the name
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_offscreen_renderer_has_geometry(int32_t* out, o3d_offscreen_renderer_t* renderer,
+O3D_API o3d_status o3d_offscreen_renderer_has_geometry(o3d_bool* out, o3d_offscreen_renderer_t* renderer,
                                                        const char* name);
 /**
  * @brief Remove the geometry named `name` (scene.remove_geometry).
@@ -371,8 +371,9 @@ O3D_API o3d_status o3d_offscreen_renderer_render_to_depth_image(o3d_image_t** ou
                                                                 o3d_offscreen_renderer_t* renderer,
                                                                 int32_t z_in_view_space);
 /**
- * @brief Render the scene and write it as a PNG file in one call. (The renderer comes first, as the
- * subject of a method, before the file it writes.)
+ * @brief Render the scene and write it as a PNG file in one call.
+ *
+ * The renderer comes first, as the subject of a method, before the file it writes.
  *
  * Threads: any thread, one call per renderer at a time (serialized).
  * @param renderer the renderer

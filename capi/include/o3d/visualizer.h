@@ -198,7 +198,7 @@ O3D_API o3d_status o3d_visualizer_clear_geometries(o3d_visualizer_t* vis);
  * @param name the name
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_visualizer_has_geometry(int32_t* out, o3d_visualizer_t* vis, const char* name);
+O3D_API o3d_status o3d_visualizer_has_geometry(o3d_bool* out, o3d_visualizer_t* vis, const char* name);
 /**
  * @brief Visualizer.get_render_option (a copy; change it and pass it to o3d_visualizer_set_render_option).
  *
@@ -225,7 +225,7 @@ O3D_API o3d_status o3d_visualizer_set_render_option(o3d_visualizer_t* vis, const
  * @param vis the visualizer
  * @return O3D_OK, O3D_ERROR_INVALID_ARGUMENT on a NULL `vis`, or what a callback run from it raised.
  */
-O3D_API o3d_status o3d_visualizer_poll_events(int32_t* out_open, o3d_visualizer_t* vis);
+O3D_API o3d_status o3d_visualizer_poll_events(o3d_bool* out_open, o3d_visualizer_t* vis);
 /**
  * @brief Visualizer.update_renderer: draw the frame again at the next poll.
  *

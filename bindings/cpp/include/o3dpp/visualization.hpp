@@ -15,6 +15,7 @@
 #include "o3dpp/camera.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/options.hpp"
+#include "o3dpp/generated/visualization.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
 #include "o3dpp/lineset.hpp"
@@ -52,9 +53,15 @@ struct RenderMaterial : detail::RenderMaterialBase {
 /// @brief rendering.OffscreenRenderer: draws copies of geometries into a width x height image without a
 /// display. Move-only. Calls on one renderer are serialized by the library, so its queries are not
 /// `const` here (as in C).
+/// The methods that pass their arguments to one C function are generated (detail::OffscreenRendererCalls).
 class OffscreenRenderer
-    : public Owner<OffscreenRenderer, o3d_offscreen_renderer_t, &o3d_offscreen_renderer_destroy> {
+    : public Owner<OffscreenRenderer, o3d_offscreen_renderer_t, &o3d_offscreen_renderer_destroy>,
+      public detail::OffscreenRendererCalls<OffscreenRenderer> {
+    friend class detail::OffscreenRendererCalls<OffscreenRenderer>;  // checks its calls with done
+
 public:
+    using detail::OffscreenRendererCalls<OffscreenRenderer>::setup_camera;  // and the overloads below
+
     /// @brief A renderer of `width` x `height` pixels (Error O3D_ERROR_UNSUPPORTED without OpenGL 3.3).
     OffscreenRenderer(int width, int height, RenderBackend backend = RenderBackend::Auto)
         : Owner(make([&](o3d_offscreen_renderer_t** out) {
@@ -91,16 +98,6 @@ public:
         const o3d_render_material_t m = material.to_c();
         return done(o3d_offscreen_renderer_add_voxelgrid(get(), name.c_str(), grid.get(), &m));
     }
-    bool has(const std::string& name) {
-        int32_t out = 0;
-        check(o3d_offscreen_renderer_has_geometry(&out, get(), name.c_str()));
-        return out != 0;
-    }
-    /// @brief Remove `name` (Error when it is not in the scene).
-    OffscreenRenderer& remove(const std::string& name) {
-        return done(o3d_offscreen_renderer_remove_geometry(get(), name.c_str()));
-    }
-    OffscreenRenderer& clear() { return done(o3d_offscreen_renderer_clear_geometries(get())); }
 
     // ---- style and camera ----
     OffscreenRenderer& set_render_option(const RenderOption& option) {
@@ -118,16 +115,6 @@ public:
     }
     OffscreenRenderer& setup_camera(const PinholeCameraParameters& parameters) {
         return setup_camera(parameters.intrinsic, parameters.extrinsic);
-    }
-    /// @brief A perspective camera at `eye` looking at `center`, `up` up, with a vertical field of view.
-    OffscreenRenderer& setup_camera(double vertical_fov_deg, const Vec3& center, const Vec3& eye, const Vec3& up) {
-        return done(o3d_offscreen_renderer_setup_camera_fov(get(), vertical_fov_deg, center.data(), eye.data(),
-                                                            up.data()));
-    }
-    /// @brief Open3D's ViewControl view (draw_geometries' lookat/front/up/zoom), resolved at each render
-    /// against the scene's bounding box.
-    OffscreenRenderer& setup_camera_lookat(const Vec3& lookat, const Vec3& front, const Vec3& up, double zoom = 0.7) {
-        return done(o3d_offscreen_renderer_setup_camera_lookat(get(), lookat.data(), front.data(), up.data(), zoom));
     }
     /// @brief The camera the next render uses, as pinhole parameters (setup_camera of them reproduces it).
     PinholeCameraParameters camera() {

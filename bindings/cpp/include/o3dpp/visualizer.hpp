@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "o3d/visualizer.h"
+#include "o3dpp/generated/visualizer.hpp"
 #include "o3dpp/visualization.hpp"
 
 namespace o3dpp {
@@ -28,7 +29,11 @@ struct View {
 };
 
 /// @brief o3d.visualization.Visualizer. Move-only; belongs to the thread that created its window.
-class Visualizer : public Owner<Visualizer, o3d_visualizer_t, &o3d_visualizer_destroy> {
+/// The methods that pass their arguments to one C function are generated (detail::VisualizerCalls).
+class Visualizer : public Owner<Visualizer, o3d_visualizer_t, &o3d_visualizer_destroy>,
+                   public detail::VisualizerCalls<Visualizer> {
+    friend class detail::VisualizerCalls<Visualizer>;  // checks its calls with done / ran
+
 public:
     /// @brief Returns true when the geometry or the view changed.
     using AnimationCallback = std::function<bool(Visualizer&)>;
@@ -53,39 +58,7 @@ public:
     }
     ~Visualizer() = default;
 
-    /// @brief Open3D's defaults are 1920 x 1080, visible; negative left/top: the window manager's place.
-    Visualizer& create_window(const std::string& name = "o3d", int width = 1920, int height = 1080, int left = -1,
-                              int top = -1, bool visible = true) {
-        return done(o3d_visualizer_create_window(get(), name.c_str(), width, height, left, top, visible ? 1 : 0));
-    }
-    Visualizer& destroy_window() { return done(o3d_visualizer_destroy_window(get())); }
-
     // ---- the scene: geometries are copied; adding under a taken name replaces it (update_geometry) ----
-    Visualizer& add(const std::string& name, const PointCloud& g, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_add_pointcloud(get(), name.c_str(), g.get(), reset_bounding_box));
-    }
-    Visualizer& add(const std::string& name, const TriangleMesh& g, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_add_trianglemesh(get(), name.c_str(), g.get(), reset_bounding_box));
-    }
-    Visualizer& add(const std::string& name, const LineSet& g, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_add_lineset(get(), name.c_str(), g.get(), reset_bounding_box));
-    }
-    Visualizer& add(const std::string& name, const VoxelGrid& g, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_add_voxelgrid(get(), name.c_str(), g.get(), reset_bounding_box));
-    }
-    /// @brief An image, shown flat under the 3D geometry and scaled to fit (it does not change the view box).
-    Visualizer& add(const std::string& name, const Image& g, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_add_image(get(), name.c_str(), g.get(), reset_bounding_box));
-    }
-    Visualizer& remove(const std::string& name, bool reset_bounding_box = true) {
-        return done(o3d_visualizer_remove_geometry(get(), name.c_str(), reset_bounding_box));
-    }
-    Visualizer& clear() { return done(o3d_visualizer_clear_geometries(get())); }
-    bool has(const std::string& name) {
-        int32_t out = 0;
-        check(o3d_visualizer_has_geometry(&out, get(), name.c_str()));
-        return out != 0;
-    }
     RenderOption render_option() {
         o3d_render_option_t c = RenderOption::library_defaults();
         check(o3d_visualizer_get_render_option(&c, get()));
@@ -97,16 +70,6 @@ public:
     }
 
     // ---- the loop and callbacks ----
-    /// @brief Handle the window's events; false once it was closed.
-    bool poll_events() {
-        int32_t open = 0;
-        ran(o3d_visualizer_poll_events(&open, get()));
-        return open != 0;
-    }
-    Visualizer& update_renderer() { return done(o3d_visualizer_update_renderer(get())); }
-    /// @brief Until the window closes (a hidden one without an animation callback: one frame).
-    Visualizer& run() { return ran(o3d_visualizer_run(get())); }
-    Visualizer& close() { return done(o3d_visualizer_close(get())); }
     /// @brief Called once per loop of run (replaces the previous one; empty removes it).
     Visualizer& register_animation_callback(AnimationCallback callback) {
         auto next = callback ? std::make_shared<AnimationCallback>(std::move(callback)) : nullptr;
@@ -123,17 +86,6 @@ public:
         return register_key(key, std::move(callback), &o3d_visualizer_register_key_action_callback);
     }
 
-    // ---- input, as the window delivers it ----
-    Visualizer& send_key(int key, KeyAction action, int mods = 0) {
-        return ran(o3d_visualizer_send_key(get(), key, static_cast<int32_t>(action), mods));
-    }
-    Visualizer& send_mouse_move(double x, double y) { return ran(o3d_visualizer_send_mouse_move(get(), x, y)); }
-    Visualizer& send_mouse_button(MouseButton button, KeyAction action, int mods = 0) {
-        return ran(o3d_visualizer_send_mouse_button(get(), static_cast<int32_t>(button), static_cast<int32_t>(action),
-                                                    mods));
-    }
-    Visualizer& send_scroll(double dx, double dy) { return ran(o3d_visualizer_send_scroll(get(), dx, dy)); }
-
     // ---- captures (a frame is drawn for each) ----
     /// @brief RGB float32 in [0, 1].
     Image capture_screen_float_buffer() {
@@ -143,29 +95,10 @@ public:
     Image capture_depth_float_buffer() {
         return Image::adopt([&](o3d_image_t** o) { return o3d_visualizer_capture_depth_float_buffer(o, get(), 1); });
     }
-    /// @brief 8-bit RGB PNG or JPEG (by extension).
-    Visualizer& capture_screen_image(const std::string& path) {
-        return done(o3d_visualizer_capture_screen_image(get(), path.c_str(), 1));
-    }
-    /// @brief depth * depth_scale as a 16-bit PNG (1000: millimetres).
-    Visualizer& capture_depth_image(const std::string& path, double depth_scale = 1000.0) {
-        return done(o3d_visualizer_capture_depth_image(get(), path.c_str(), 1, depth_scale));
-    }
     /// @brief Editing: vertex indices of the first geometry added, in pick order.
     std::vector<int32_t> picked_points() const { return copy_out<int32_t>(&o3d_visualizer_get_picked_points); }
 
     // ---- ViewControl ----
-    Visualizer& rotate(double x, double y) { return done(o3d_visualizer_view_rotate(get(), x, y)); }
-    Visualizer& translate(double x, double y) { return done(o3d_visualizer_view_translate(get(), x, y)); }
-    Visualizer& scale(double steps) { return done(o3d_visualizer_view_scale(get(), steps)); }
-    Visualizer& change_field_of_view(double step = 0.45) {
-        return done(o3d_visualizer_view_change_field_of_view(get(), step));
-    }
-    double field_of_view() {
-        double out = 0;
-        check(o3d_visualizer_view_get_field_of_view(&out, get()));
-        return out;
-    }
     View view() {
         View v;
         check(o3d_visualizer_view_get(v.front.data(), v.lookat.data(), v.up.data(), &v.zoom, get()));
@@ -175,8 +108,6 @@ public:
     Visualizer& set_view(const View& v) {
         return done(o3d_visualizer_view_set(get(), v.front.data(), v.lookat.data(), v.up.data(), v.zoom));
     }
-    /// @brief Open3D's default view of the scene (the R key).
-    Visualizer& reset_view() { return done(o3d_visualizer_view_reset(get())); }
     PinholeCameraParameters to_pinhole() {
         PinholeCameraParameters p;
         check(o3d_visualizer_view_to_pinhole(&p.intrinsic, p.extrinsic.data(), get()));
@@ -189,9 +120,6 @@ public:
     /// @brief The view as Open3D's ViewTrajectory JSON (what Ctrl+C copies).
     std::string view_status() {
         return Buffer::adopt([&](o3d_buffer_t** o) { return o3d_visualizer_get_view_status(o, get()); }).to_string();
-    }
-    Visualizer& set_view_status(const std::string& json) {
-        return done(o3d_visualizer_set_view_status(get(), json.c_str()));
     }
     /// @brief Play a ViewTrajectory JSON file, writing image_%06d.png (and depth_%06d.png) into
     /// `capture_dir` unless it is empty; `progress` after each frame may return false to stop.

@@ -8,6 +8,8 @@ use crate::array::{impl_arrays, Family};
 use crate::error::{check, Error, ErrorCode, Result};
 use crate::util::{copy_out, handle, init_struct, opt_ptr, to_i32};
 
+include!("generated/pointcloud.rs");
+
 /// Neighbourhood search parameter (Open3D `KDTreeSearchParamKNN` / `Radius` / `Hybrid`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SearchParam {
@@ -262,13 +264,6 @@ impl PointCloud {
         Ok(self)
     }
 
-    /// `relative`: add `translation`; otherwise move the center to `translation`.
-    pub fn translate(&mut self, translation: [f64; 3], relative: bool) -> Result<&mut Self> {
-        // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_translate(self.raw_mut(), translation.as_ptr(), relative as i32) })?;
-        Ok(self)
-    }
-
     /// Rotate by the row-major 3x3 `rotation` about `center` (`None`: the cloud's center).
     pub fn rotate(&mut self, rotation: &[[f64; 3]; 3], center: Option<[f64; 3]>) -> Result<&mut Self> {
         // SAFETY: 9 contiguous doubles; center NULL or 3 doubles.
@@ -318,35 +313,12 @@ impl PointCloud {
         Ok((lo, hi))
     }
 
-    /// Set every color to `rgb` (each in `[0, 1]`).
-    pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
-        // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
-        Ok(self)
-    }
-
     /// New cloud with the points at `indices` (or all others when `invert`). Out of range → Err.
     pub fn select_by_index(&self, indices: &[i32], invert: bool) -> Result<PointCloud> {
         // SAFETY: indices.len() ints.
         new_cloud(|out| unsafe {
             sys::o3d_pointcloud_select_by_index(out, self.as_raw(), indices.as_ptr(), indices.len(), invert as i32)
         })
-    }
-
-    /// Drop points with a NaN (`remove_nan`) or an infinite (`remove_infinite`) coordinate.
-    pub fn remove_non_finite_points(&mut self, remove_nan: bool, remove_infinite: bool) -> Result<&mut Self> {
-        // SAFETY: valid handle.
-        check(unsafe {
-            sys::o3d_pointcloud_remove_non_finite_points(self.raw_mut(), remove_nan as i32, remove_infinite as i32)
-        })?;
-        Ok(self)
-    }
-
-    /// Scale every normal to unit length.
-    pub fn normalize_normals(&mut self) -> Result<&mut Self> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_pointcloud_normalize_normals(self.raw_mut()) })?;
-        Ok(self)
     }
 
     /// Average points (normals, colors) per voxel of edge `voxel_size` > 0.

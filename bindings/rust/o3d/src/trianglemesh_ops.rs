@@ -19,17 +19,10 @@ pub struct TriangleClusters {
     pub cluster_area: Vec<f64>,
 }
 
-type InPlaceFn = unsafe extern "C" fn(*mut sys::o3d_trianglemesh_t) -> sys::o3d_status;
 type FlagFn = unsafe extern "C" fn(*mut i32, *const sys::o3d_trianglemesh_t) -> sys::o3d_status;
 type Vec3Fn = unsafe extern "C" fn(*mut f64, *const sys::o3d_trianglemesh_t) -> sys::o3d_status;
 
 impl TriangleMesh {
-    fn in_place(&mut self, f: InPlaceFn) -> Result<&mut Self> {
-        // SAFETY: valid handle, exclusively borrowed.
-        check(unsafe { f(self.raw_mut()) })?;
-        Ok(self)
-    }
-
     fn flag(&self, f: FlagFn) -> Result<bool> {
         let mut v = 0;
         // SAFETY: valid handle and out-pointer.
@@ -46,43 +39,10 @@ impl TriangleMesh {
 
     // ---- normals, colors, transforms, bounds ----
 
-    /// Area-weighted vertex normals (unit length when `normalized`).
-    pub fn compute_vertex_normals(&mut self, normalized: bool) -> Result<&mut Self> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_trianglemesh_compute_vertex_normals(self.raw_mut(), normalized as i32) })?;
-        Ok(self)
-    }
-
-    /// Triangle normals (b - a) x (c - a) (unit length when `normalized`).
-    pub fn compute_triangle_normals(&mut self, normalized: bool) -> Result<&mut Self> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_trianglemesh_compute_triangle_normals(self.raw_mut(), normalized as i32) })?;
-        Ok(self)
-    }
-
-    /// Scale vertex and triangle normals to unit length.
-    pub fn normalize_normals(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_normalize_normals)
-    }
-
-    /// Set every vertex color to `rgb`.
-    pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
-        // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_trianglemesh_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
-        Ok(self)
-    }
-
     /// Apply a row-major 4x4 transform (normals rotated).
     pub fn transform(&mut self, transformation: &[[f64; 4]; 4]) -> Result<&mut Self> {
         // SAFETY: 16 contiguous doubles.
         check(unsafe { sys::o3d_trianglemesh_transform(self.raw_mut(), mat4_ptr(transformation)) })?;
-        Ok(self)
-    }
-
-    /// `relative`: add `translation`; otherwise move the center to it.
-    pub fn translate(&mut self, translation: [f64; 3], relative: bool) -> Result<&mut Self> {
-        // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_trianglemesh_translate(self.raw_mut(), translation.as_ptr(), relative as i32) })?;
         Ok(self)
     }
 
@@ -126,38 +86,6 @@ impl TriangleMesh {
     }
 
     // ---- clean-up (in place) ----
-
-    /// Merge vertices with exactly equal coordinates.
-    pub fn remove_duplicated_vertices(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_remove_duplicated_vertices)
-    }
-
-    /// Remove triangles with the same three vertices (in any order).
-    pub fn remove_duplicated_triangles(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_remove_duplicated_triangles)
-    }
-
-    /// Remove triangles that repeat a vertex index.
-    pub fn remove_degenerate_triangles(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_remove_degenerate_triangles)
-    }
-
-    /// Remove vertices no triangle uses.
-    pub fn remove_unreferenced_vertices(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_remove_unreferenced_vertices)
-    }
-
-    /// Remove the smallest triangles on edges shared by more than two until all edges are manifold.
-    pub fn remove_non_manifold_edges(&mut self) -> Result<&mut Self> {
-        self.in_place(sys::o3d_trianglemesh_remove_non_manifold_edges)
-    }
-
-    /// Merge vertices closer than `eps` into their mean.
-    pub fn merge_close_vertices(&mut self, eps: f64) -> Result<&mut Self> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_trianglemesh_merge_close_vertices(self.raw_mut(), eps) })?;
-        Ok(self)
-    }
 
     // ---- queries ----
 

@@ -153,28 +153,6 @@ impl OffscreenRenderer {
         check(unsafe { geometry.add_to(self.raw_mut(), name.as_ptr(), &material) })
     }
 
-    /// scene.has_geometry.
-    pub fn has_geometry(&mut self, name: &str) -> Result<bool> {
-        let name = c_string("name", name)?;
-        let mut out = 0;
-        // SAFETY: valid handle, out-pointer and NUL-terminated name.
-        check(unsafe { sys::o3d_offscreen_renderer_has_geometry(&mut out, self.raw_mut(), name.as_ptr()) })?;
-        Ok(out != 0)
-    }
-
-    /// scene.remove_geometry (`InvalidArgument` when `name` is not in the scene).
-    pub fn remove_geometry(&mut self, name: &str) -> Result<()> {
-        let name = c_string("name", name)?;
-        // SAFETY: valid handle and NUL-terminated name.
-        check(unsafe { sys::o3d_offscreen_renderer_remove_geometry(self.raw_mut(), name.as_ptr()) })
-    }
-
-    /// scene.clear_geometry: remove every geometry.
-    pub fn clear_geometry(&mut self) -> Result<()> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_offscreen_renderer_clear_geometries(self.raw_mut()) })
-    }
-
     /// Replace the render option (`InvalidArgument` for a value out of range).
     pub fn set_render_option(&mut self, option: &RenderOption) -> Result<()> {
         let raw = option.to_raw()?;
@@ -196,42 +174,6 @@ impl OffscreenRenderer {
         let k = intrinsic.to_raw();
         // SAFETY: valid handle, struct and 16 contiguous doubles.
         check(unsafe { sys::o3d_offscreen_renderer_setup_camera(self.raw_mut(), &k, mat4_ptr(extrinsic)) })
-    }
-
-    /// setup_camera(vertical_field_of_view, center, eye, up): a perspective camera at `eye` looking at
-    /// `center`.
-    pub fn setup_camera_fov(
-        &mut self,
-        vertical_fov_deg: f64,
-        center: [f64; 3],
-        eye: [f64; 3],
-        up: [f64; 3],
-    ) -> Result<()> {
-        // SAFETY: valid handle and three arrays of 3 doubles.
-        check(unsafe {
-            sys::o3d_offscreen_renderer_setup_camera_fov(
-                self.raw_mut(),
-                vertical_fov_deg,
-                center.as_ptr(),
-                eye.as_ptr(),
-                up.as_ptr(),
-            )
-        })
-    }
-
-    /// Open3D's ViewControl view (draw_geometries' lookat/front/up/zoom, zoom in `[0.02, 2]`), resolved
-    /// at each render against the scene's bounding box.
-    pub fn setup_camera_lookat(&mut self, lookat: [f64; 3], front: [f64; 3], up: [f64; 3], zoom: f64) -> Result<()> {
-        // SAFETY: valid handle and three arrays of 3 doubles.
-        check(unsafe {
-            sys::o3d_offscreen_renderer_setup_camera_lookat(
-                self.raw_mut(),
-                lookat.as_ptr(),
-                front.as_ptr(),
-                up.as_ptr(),
-                zoom,
-            )
-        })
     }
 
     /// The camera the next render uses, as pinhole parameters: [`Self::setup_camera`] with them
@@ -261,13 +203,6 @@ impl OffscreenRenderer {
         new_image(|out| unsafe {
             sys::o3d_offscreen_renderer_render_to_depth_image(out, raw, i32::from(z_in_view_space))
         })
-    }
-
-    /// Render and write a PNG file.
-    pub fn render_to_png(&mut self, path: impl AsRef<Path>) -> Result<()> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: NUL-terminated path and valid handle.
-        check(unsafe { sys::o3d_offscreen_renderer_render_to_png(self.raw_mut(), path.as_ptr()) })
     }
 }
 

@@ -147,19 +147,6 @@ unsafe extern "C" fn key_trampoline(vis: *mut sys::o3d_visualizer_t, action: i32
 type RegisterKey =
     unsafe extern "C" fn(*mut sys::o3d_visualizer_t, i32, sys::o3d_visualizer_key_callback, *mut c_void) -> i32;
 
-/// Methods that pass the handle and their arguments to one C function and return its status. Arguments
-/// are converted inside the call expression (`c_string(..)?.as_ptr()`), so the temporaries they make live
-/// until the call returns.
-macro_rules! calls {
-    ($($(#[$doc:meta])* fn $name:ident($($arg:ident: $ty:ty),*) => $c:ident($($e:expr),*);)+) => {$(
-        $(#[$doc])*
-        pub fn $name(&self, $($arg: $ty),*) -> Result<()> {
-            // SAFETY: a valid handle; pointers to values that live for the call.
-            check(unsafe { sys::$c(self.raw() $(, $e)*) })
-        }
-    )+};
-}
-
 impl Visualizer {
     /// A visualizer without a window yet.
     pub fn new() -> Result<Visualizer> {
@@ -182,66 +169,25 @@ impl Visualizer {
         self.raw.as_ptr()
     }
 
-    calls! {
-        /// create_window: `visible` false is a hidden window (EGL when it works: no display needed); a
-        /// visible one needs the main thread and a display. Negative `left`/`top`: the window manager's.
-        fn create_window(name: &str, width: i32, height: i32, left: i32, top: i32, visible: bool) =>
-            o3d_visualizer_create_window(c_string("name", name)?.as_ptr(), width, height, left, top, visible as i32);
-        /// destroy_window: close the window and forget the scene (refused from inside a callback).
-        fn destroy_window() => o3d_visualizer_destroy_window();
-        /// add_geometry for an image: shown flat under the 3D geometry, scaled to fit the window (1, 3 or 4
-        /// channels of `u8`; one of `u16` or `f32` as gray); it does not change the view box.
-        fn add_image(name: &str, image: &Image, reset_bounding_box: bool) =>
-            o3d_visualizer_add_image(c_string("name", name)?.as_ptr(), image.as_raw(), i32::from(reset_bounding_box));
-        /// remove_geometry (`InvalidArgument` when `name` is not in the scene).
-        fn remove_geometry(name: &str, reset_bounding_box: bool) =>
-            o3d_visualizer_remove_geometry(c_string("name", name)?.as_ptr(), i32::from(reset_bounding_box));
-        /// clear_geometries.
-        fn clear_geometries() => o3d_visualizer_clear_geometries();
-        /// Replace the render option (`InvalidArgument` for a value out of range).
-        fn set_render_option(option: &RenderOption) => o3d_visualizer_set_render_option(&option.to_raw()?);
-        /// update_renderer: draw the frame again at the next poll.
-        fn update_renderer() => o3d_visualizer_update_renderer();
-        /// run: events, the animation callback and frames until the window closes (a hidden window without
-        /// an animation callback draws one frame). A panicking callback ends it with `ErrorCode::Cancelled`.
-        fn run() => o3d_visualizer_run();
-        /// close: the window closes; run and poll_events end.
-        fn close() => o3d_visualizer_close();
-        /// Deliver a key event as the window does: a callback, else o3d's binding (R reset, [ ] field of
-        /// view, + - point size, Q/Esc close, ... see `o3d/visualizer.h`). `key`: GLFW's number.
-        fn send_key(key: i32, action: KeyAction, mods: i32) => o3d_visualizer_send_key(key, action.raw(), mods);
-        /// Deliver a cursor move (window pixels): a drag with the left button rotates.
-        fn send_mouse_move(x: f64, y: f64) => o3d_visualizer_send_mouse_move(x, y);
-        /// Deliver a button press or release at the cursor.
-        fn send_mouse_button(button: MouseButton, action: KeyAction, mods: i32) =>
-            o3d_visualizer_send_mouse_button(button.raw(), action.raw(), mods);
-        /// Deliver a wheel turn (the zoom changes by `dy` steps).
-        fn send_scroll(dx: f64, dy: f64) => o3d_visualizer_send_scroll(dx, dy);
-        /// capture_screen_image: an 8-bit RGB PNG or JPEG (by extension).
-        fn capture_screen_image(path: impl AsRef<Path>) =>
-            o3d_visualizer_capture_screen_image(c_path(path.as_ref())?.as_ptr(), 1);
-        /// capture_depth_image: depth * `depth_scale` (Open3D's 1000: millimetres) as a 16-bit PNG.
-        fn capture_depth_image(path: impl AsRef<Path>, depth_scale: f64) =>
-            o3d_visualizer_capture_depth_image(c_path(path.as_ref())?.as_ptr(), 1, depth_scale);
-        /// ViewControl.rotate: as a left-button drag of (x, y) pixels (0.003 rad a pixel).
-        fn rotate(x: f64, y: f64) => o3d_visualizer_view_rotate(x, y);
-        /// ViewControl.translate: as a Ctrl + left-button drag of (x, y) pixels.
-        fn translate(x: f64, y: f64) => o3d_visualizer_view_translate(x, y);
-        /// ViewControl.scale: zoom += `scale` * 0.02, kept in [0.02, 2].
-        fn scale(scale: f64) => o3d_visualizer_view_scale(scale);
-        /// ViewControl.change_field_of_view: += `step` * 5 degrees, kept in [5, 90].
-        fn change_field_of_view(step: f64) => o3d_visualizer_view_change_field_of_view(step);
-        /// ViewControl.set_front / set_lookat / set_up / set_zoom at once (on error the view is unchanged).
-        fn set_view(v: &View) =>
-            o3d_visualizer_view_set(v.front.as_ptr(), v.lookat.as_ptr(), v.up.as_ptr(), v.zoom);
-        /// ViewControl.reset_camera_local_rotate / the R key: Open3D's default view of the scene.
-        fn reset_view() => o3d_visualizer_view_reset();
-        /// ViewControl.convert_from_pinhole_camera_parameters: the same camera gives the same image (the
-        /// window's size, centred principal point, fx = fy, field of view in [5, 90], rigid extrinsic).
-        fn from_pinhole(camera: &PinholeCameraParameters) =>
-            o3d_visualizer_view_from_pinhole(&camera.intrinsic.to_raw(), mat4_ptr(&camera.extrinsic));
-        /// Set the view from ViewTrajectory JSON (`ErrorCode::Parse` when malformed; the view is unchanged).
-        fn set_view_status(json: &str) => o3d_visualizer_set_view_status(c_string("json", json)?.as_ptr());
+    /// Replace the render option (`InvalidArgument` for a value out of range).
+    pub fn set_render_option(&self, option: &RenderOption) -> Result<()> {
+        // SAFETY: a valid handle and a struct that lives for the call.
+        check(unsafe { sys::o3d_visualizer_set_render_option(self.raw(), &option.to_raw()?) })
+    }
+
+    /// ViewControl.set_front / set_lookat / set_up / set_zoom at once (on error the view is unchanged).
+    pub fn set_view(&self, v: &View) -> Result<()> {
+        let (front, lookat, up) = (v.front.as_ptr(), v.lookat.as_ptr(), v.up.as_ptr());
+        // SAFETY: a valid handle and three arrays of 3 doubles.
+        check(unsafe { sys::o3d_visualizer_view_set(self.raw(), front, lookat, up, v.zoom) })
+    }
+
+    /// ViewControl.convert_from_pinhole_camera_parameters: the same camera gives the same image (the
+    /// window's size, centred principal point, fx = fy, field of view in [5, 90], rigid extrinsic).
+    pub fn from_pinhole(&self, camera: &PinholeCameraParameters) -> Result<()> {
+        let extrinsic = mat4_ptr(&camera.extrinsic);
+        // SAFETY: a valid handle, a struct and 16 contiguous doubles that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_from_pinhole(self.raw(), &camera.intrinsic.to_raw(), extrinsic) })
     }
 
     /// add_geometry / update_geometry: a copy is drawn under `name`, replacing one of that name;
@@ -252,27 +198,12 @@ impl Visualizer {
         check(unsafe { geometry.show_in(self.raw(), name.as_ptr(), i32::from(reset_bounding_box)) })
     }
 
-    /// Whether a geometry of that name is in the scene.
-    pub fn has_geometry(&self, name: &str) -> Result<bool> {
-        let mut out = 0;
-        let name = c_string("name", name)?;
-        // SAFETY: out-pointer, valid handle and NUL-terminated name.
-        check(unsafe { sys::o3d_visualizer_has_geometry(&mut out, self.raw(), name.as_ptr()) }).map(|()| out != 0)
-    }
-
     /// get_render_option (a copy).
     pub fn render_option(&self) -> Result<RenderOption> {
         let mut raw = RenderOption::raw_default()?;
         // SAFETY: a struct filled by its init and a valid handle.
         check(unsafe { sys::o3d_visualizer_get_render_option(&mut raw, self.raw()) })?;
         RenderOption::from_raw(&raw)
-    }
-
-    /// poll_events: handle the window's events and draw a frame when needed; false once it was closed.
-    pub fn poll_events(&self) -> Result<bool> {
-        let mut open = 0;
-        // SAFETY: out-pointer and valid handle.
-        check(unsafe { sys::o3d_visualizer_poll_events(&mut open, self.raw()) }).map(|()| open != 0)
     }
 
     /// register_animation_callback: `f` runs once per loop of [`Self::run`] and returns true when the
@@ -322,13 +253,6 @@ impl Visualizer {
         // SAFETY: `out` has room for `cap` indices or is NULL; valid handle.
         let picked = copy_out(|out, cap, n| unsafe { sys::o3d_visualizer_get_picked_points(out, cap, n, self.raw()) });
         Ok(picked?.into_iter().map(|i: i32| i as usize).collect())
-    }
-
-    /// ViewControl.get_field_of_view: the vertical field of view in degrees.
-    pub fn field_of_view(&self) -> Result<f64> {
-        let mut out = 0.0;
-        // SAFETY: out-pointer and valid handle.
-        check(unsafe { sys::o3d_visualizer_view_get_field_of_view(&mut out, self.raw()) }).map(|()| out)
     }
 
     /// The view's front, lookat, up and zoom.

@@ -28,3 +28,72 @@ c_enum! {
         Vertex = sys::O3D_FILTER_SCOPE_VERTEX,
     }
 }
+
+impl TriangleMesh {
+    /// Area-weighted vertex normals from the triangle normals (unit length when `normalized`).
+    pub fn compute_vertex_normals(&mut self, normalized: bool) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_compute_vertex_normals(self.raw_mut(), i32::from(normalized)) })?;
+        Ok(self)
+    }
+    /// Triangle normals (b - a) x (c - a) (unit length when `normalized`).
+    pub fn compute_triangle_normals(&mut self, normalized: bool) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_compute_triangle_normals(self.raw_mut(), i32::from(normalized)) })?;
+        Ok(self)
+    }
+    /// Scale vertex and triangle normals to unit length.
+    pub fn normalize_normals(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_normalize_normals(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Set every vertex color to `rgb`.
+    pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
+        Ok(self)
+    }
+    /// Move the mesh: with `relative`, by `translation`; without, so that its center is at `translation`.
+    pub fn translate(&mut self, translation: [f64; 3], relative: bool) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_translate(self.raw_mut(), translation.as_ptr(), i32::from(relative)) })?;
+        Ok(self)
+    }
+    /// Merge vertices with exactly equal coordinates, re-indexing the triangles.
+    pub fn remove_duplicated_vertices(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_remove_duplicated_vertices(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Remove triangles with the same three vertices (in any order).
+    pub fn remove_duplicated_triangles(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_remove_duplicated_triangles(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Remove triangles that repeat a vertex index.
+    pub fn remove_degenerate_triangles(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_remove_degenerate_triangles(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Remove vertices no triangle uses.
+    pub fn remove_unreferenced_vertices(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_remove_unreferenced_vertices(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Remove the smallest-area triangles on each edge shared by more than two, until all are manifold.
+    pub fn remove_non_manifold_edges(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_remove_non_manifold_edges(self.raw_mut()) })?;
+        Ok(self)
+    }
+    /// Merge vertices closer than `eps` (>= 0) into their mean (normals and colors averaged).
+    pub fn merge_close_vertices(&mut self, eps: f64) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_merge_close_vertices(self.raw_mut(), eps) })?;
+        Ok(self)
+    }
+}

@@ -111,3 +111,37 @@ options! {
         pub line_width: f64 = line_width,
     }
 }
+
+impl OffscreenRenderer {
+    /// Whether a geometry named `name` is in the scene (scene.has_geometry).
+    pub fn has_geometry(&mut self, name: &str) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_has_geometry(&mut out, self.raw_mut(), c_string("name", name)?.as_ptr()) }).map(|()| out != 0)
+    }
+    /// Remove the geometry named `name` (scene.remove_geometry).
+    pub fn remove_geometry(&mut self, name: &str) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_remove_geometry(self.raw_mut(), c_string("name", name)?.as_ptr()) })
+    }
+    /// Remove every geometry (scene.clear_geometry).
+    pub fn clear_geometry(&mut self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_clear_geometries(self.raw_mut()) })
+    }
+    /// Open3D's ViewControl view: look at `lookat` from direction `front`, with `up` up, at `zoom` (draw_geometries' lookat/front/up/zoom). The distance follows from the scene's box at render time.
+    pub fn setup_camera_lookat(&mut self, lookat: [f64; 3], front: [f64; 3], up: [f64; 3], zoom: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_setup_camera_lookat(self.raw_mut(), lookat.as_ptr(), front.as_ptr(), up.as_ptr(), zoom) })
+    }
+    /// A perspective camera at `eye` looking at `center` with `up` up and a vertical field of view (setup_camera(vertical_field_of_view, center, eye, up)).
+    pub fn setup_camera_fov(&mut self, vertical_fov_deg: f64, center: [f64; 3], eye: [f64; 3], up: [f64; 3]) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_setup_camera_fov(self.raw_mut(), vertical_fov_deg, center.as_ptr(), eye.as_ptr(), up.as_ptr()) })
+    }
+    /// Render the scene and write it as a PNG file in one call.
+    pub fn render_to_png(&mut self, path: impl AsRef<Path>) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_render_to_png(self.raw_mut(), c_path(path.as_ref())?.as_ptr()) })
+    }
+}

@@ -26,3 +26,124 @@ c_enum! {
         Middle = sys::O3D_MOUSE_BUTTON_MIDDLE,
     }
 }
+
+impl Visualizer {
+    /// Visualizer.create_window.
+    pub fn create_window(&self, window_name: &str, width: i32, height: i32, left: i32, top: i32, visible: bool) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_create_window(self.raw(), c_string("window_name", window_name)?.as_ptr(), width, height, left, top, i32::from(visible)) })
+    }
+    /// Visualizer.destroy_window: close the window and forget the scene (no-op without a window).
+    pub fn destroy_window(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_destroy_window(self.raw()) })
+    }
+    /// `o3d_visualizer_add_pointcloud` for an image: shown flat under the 3D geometry, scaled to fit the window with its aspect ratio kept and centred (Open3D's legacy viewer). 1, 3 or 4 channels of uint8; one channel of uint16 or float32 is shown as gray up to its largest value; 3 of float32 clamped to `[0, 1]`. An image does not change the view box.
+    pub fn add_image(&self, name: &str, image: &Image, reset_bounding_box: bool) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_add_image(self.raw(), c_string("name", name)?.as_ptr(), image.as_raw(), i32::from(reset_bounding_box)) })
+    }
+    /// Visualizer.remove_geometry.
+    pub fn remove_geometry(&self, name: &str, reset_bounding_box: bool) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_remove_geometry(self.raw(), c_string("name", name)?.as_ptr(), i32::from(reset_bounding_box)) })
+    }
+    /// Visualizer.clear_geometries.
+    pub fn clear_geometries(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_clear_geometries(self.raw()) })
+    }
+    /// Whether a geometry of that name is in the scene (0 without a window).
+    pub fn has_geometry(&self, name: &str) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_has_geometry(&mut out, self.raw(), c_string("name", name)?.as_ptr()) }).map(|()| out != 0)
+    }
+    /// Visualizer.poll_events: handle the window's events and draw a frame when needed.
+    pub fn poll_events(&self) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_poll_events(&mut out, self.raw()) }).map(|()| out != 0)
+    }
+    /// Visualizer.update_renderer: draw the frame again at the next poll.
+    pub fn update_renderer(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_update_renderer(self.raw()) })
+    }
+    /// Visualizer.run: events, the animation callback and frames until the window is closed (by the user, a key, or `o3d_visualizer_close` from a callback). A hidden window without an animation callback could never be closed, so then one frame is drawn and run returns.
+    pub fn run(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_run(self.raw()) })
+    }
+    /// Visualizer.close: the window closes; run and poll_events end.
+    pub fn close(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_close(self.raw()) })
+    }
+    /// Deliver a key event as the window does: a registered callback, else o3d's own binding (H help, R reset, `[ ]` field of view, + - point size, N normals, W wireframe, B back faces, L light, S shading, 0-4 9 colours, P capture, Ctrl+C view to clipboard, Q/Esc close).
+    pub fn send_key(&self, key: i32, action: KeyAction, mods: i32) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_send_key(self.raw(), key, action.raw(), mods) })
+    }
+    /// Deliver a cursor move (window pixels): a drag with the left button rotates, with Ctrl + left or the middle button translates.
+    pub fn send_mouse_move(&self, x: f64, y: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_send_mouse_move(self.raw(), x, y) })
+    }
+    /// Deliver a mouse button event at the cursor's place (editing: Shift + left release picks).
+    pub fn send_mouse_button(&self, button: MouseButton, action: KeyAction, mods: i32) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_send_mouse_button(self.raw(), button.raw(), action.raw(), mods) })
+    }
+    /// Deliver a wheel turn: the view's zoom changes by `dy` steps (ViewControl.scale).
+    pub fn send_scroll(&self, dx: f64, dy: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_send_scroll(self.raw(), dx, dy) })
+    }
+    /// Visualizer.capture_screen_image: the frame as an 8-bit RGB image file (PNG or JPEG by extension).
+    pub fn capture_screen_image(&self, path: impl AsRef<Path>) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_capture_screen_image(self.raw(), c_path(path.as_ref())?.as_ptr(), 1) })
+    }
+    /// Visualizer.capture_depth_image: depth * `depth_scale` as a 16-bit PNG (Open3D's default scale 1000: millimetres), clamped to 65535.
+    pub fn capture_depth_image(&self, path: impl AsRef<Path>, depth_scale: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_capture_depth_image(self.raw(), c_path(path.as_ref())?.as_ptr(), 1, depth_scale) })
+    }
+    /// ViewControl.rotate: as a left-button drag of (x, y) pixels (0.003 rad per pixel).
+    pub fn rotate(&self, x: f64, y: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_rotate(self.raw(), x, y) })
+    }
+    /// ViewControl.translate: as a Ctrl + left-button drag of (x, y) pixels.
+    pub fn translate(&self, x: f64, y: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_translate(self.raw(), x, y) })
+    }
+    /// ViewControl.scale: zoom += scale * 0.02, kept in `[0.02, 2]`.
+    pub fn scale(&self, scale: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_scale(self.raw(), scale) })
+    }
+    /// ViewControl.change_field_of_view: += step * 5 degrees, kept in `[5, 90]`.
+    pub fn change_field_of_view(&self, step: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_change_field_of_view(self.raw(), step) })
+    }
+    /// ViewControl.get_field_of_view, in degrees.
+    pub fn field_of_view(&self) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_get_field_of_view(&mut out, self.raw()) }).map(|()| out)
+    }
+    /// ViewControl.reset_camera_local_rotate / the R key: the view box from the scene, then Open3D's default view (front +z, up +y, zoom 0.7, field of view 60).
+    pub fn reset_view(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_view_reset(self.raw()) })
+    }
+    /// Set the view from ViewTrajectory JSON (its first entry), as Ctrl+V does in Open3D.
+    pub fn set_view_status(&self, json: &str) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_set_view_status(self.raw(), c_string("json", json)?.as_ptr()) })
+    }
+}

@@ -1,21 +1,26 @@
 #!/usr/bin/env python3
-"""Rendering benchmark: o3d's offscreen renderer against Open3D's legacy Visualizer, in one process.
+"""Rendering benchmark: o3d against Open3D's legacy Visualizer, each library in its own process.
 
     xvfb-run -a -s "-screen 0 1280x1024x24" bench/.venv/bin/python bench/visualization_bench.py [--out FILE]
 
-Rows (each library draws the same geometry into a 640 x 480 image and reads it back, as a capture does):
-- frames per second for a 1M-point colored cloud and for a 500k-triangle mesh with vertex normals:
-  o3d's OffscreenRenderer.render_to_image (EGL; the GLFW backend too when a display is there),
-  Open3D's Visualizer (a hidden window on the X display: poll_events + update_renderer +
-  capture_screen_float_buffer(do_render=True));
-- the time from the call to the first PNG written (renderer or window created, geometry added, one frame
-  rendered and saved), for the 1M-point cloud.
-Software rendering (Mesa llvmpipe) on a machine without a GPU: the report says which renderer each library got.
+Both libraries draw the same geometry into a 640 x 480 frame and read it back, as a capture does:
+- offscreen: o3d's OffscreenRenderer.render_to_image (EGL, no display); Open3D's Visualizer with a hidden
+  window (its legacy viewer has no headless path);
+- on screen: a visible Visualizer window on the X display (Xvfb), the same script for both libraries
+  (poll_events + update_renderer + capture_screen_float_buffer(do_render=True));
+- frames per second for a 1M-point colored cloud and a 1M-triangle sphere (create_sphere(resolution=500))
+  with vertex normals, and the time from the call to the first PNG written (window or renderer created,
+  the cloud added, one frame rendered and saved).
+Each row of each library runs in a process of its own so that neither's OpenGL state can touch the other's, and every
+timed frame is checked to show the geometry (enough non-background pixels), so an empty frame cannot pass
+for a fast one. Software rendering (Mesa llvmpipe) on a machine without a GPU: the report says so.
 """
 import argparse
+import json
 import os
 import platform
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -23,6 +28,7 @@ import time
 import numpy as np
 
 WIDTH, HEIGHT = 640, 480
+MIN_DRAWN_PIXELS = 5000
 
 
 def cloud_points(n=1_000_000, seed=3):
@@ -34,53 +40,44 @@ def cloud_points(n=1_000_000, seed=3):
     return pts, colors
 
 
+def check_drawn(image):
+    a = np.asarray(image, dtype=np.float64)
+    a = a / 255.0 if a.max() > 1.0 else a
+    drawn = int((a < 0.99).any(axis=2).sum())
+    if drawn < MIN_DRAWN_PIXELS:
+        raise RuntimeError(f"a timed frame shows only {drawn} drawn pixels: the geometry was not rendered")
+
+
 def fps(draw, frames, warmup=2):
     for _ in range(warmup):
-        draw()
+        check_drawn(draw())
     times = []
     for _ in range(frames):
         t0 = time.perf_counter()
-        draw()
+        image = draw()
         times.append(time.perf_counter() - t0)
+        check_drawn(image)
     return 1.0 / statistics.median(times)
 
 
-def o3d_rows(lib, points, colors, frames, backend):
-    rendering = lib.visualization.rendering
-    out = {}
+def geometries(lib):
+    points, colors = cloud_points()
     pcd = lib.geometry.PointCloud(lib.utility.Vector3dVector(points))
     pcd.colors = lib.utility.Vector3dVector(colors)
     mesh = lib.geometry.TriangleMesh.create_sphere(radius=1.0, resolution=500)
     mesh.compute_vertex_normals()
-    for name, geometry in (("cloud", pcd), ("mesh", mesh)):
-        r = rendering.OffscreenRenderer(WIDTH, HEIGHT, backend=backend)
-        material = rendering.MaterialRecord()
-        material.point_size = 2
-        r.scene.add_geometry(name, geometry, material)
-        r.setup_camera_lookat([0, 0, 0], [0.3, -0.5, 1], [0, 1, 0], 0.8)
-        out[name] = fps(r.render_to_image, frames)
-        out["backend"] = r.backend
-        del r
-    path = os.path.join(tempfile.mkdtemp(), "first.png")
-    t0 = time.perf_counter()
-    r = rendering.OffscreenRenderer(WIDTH, HEIGHT, backend=backend)
-    r.scene.add_geometry("cloud", pcd, rendering.MaterialRecord())
-    r.render_to_png(path)
-    out["first_png"] = time.perf_counter() - t0
-    del r
-    return out
+    return {"cloud": pcd, "mesh": mesh}
 
 
-def open3d_rows(o3d, points, colors, frames):
+def visualizer_rows(lib, geoms, frames, visible, row):
+    """The same code for both libraries: their Visualizer APIs are the same."""
     out = {}
-    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
-    pcd.colors = o3d.utility.Vector3dVector(colors)
-    mesh = o3d.geometry.TriangleMesh.create_sphere(radius=1.0, resolution=500)
-    mesh.compute_vertex_normals()
-    for name, geometry in (("cloud", pcd), ("mesh", mesh)):
-        vis = o3d.visualization.Visualizer()
-        if not vis.create_window(width=WIDTH, height=HEIGHT, visible=False):
-            raise RuntimeError("Open3D could not create a window (is DISPLAY set? run under xvfb-run)")
+    for name, geometry in geoms.items():
+        if name != row:
+            continue
+        vis = lib.visualization.Visualizer()
+        if not vis.create_window(width=WIDTH, height=HEIGHT, visible=visible):
+            raise RuntimeError("no window (is DISPLAY set? run under xvfb-run)")
         vis.add_geometry(geometry)
         vis.get_render_option().point_size = 2
         ctl = vis.get_view_control()
@@ -92,26 +89,61 @@ def open3d_rows(o3d, points, colors, frames):
         def draw():
             vis.poll_events()
             vis.update_renderer()
-            vis.capture_screen_float_buffer(do_render=True)
+            return vis.capture_screen_float_buffer(do_render=True)
 
         out[name] = fps(draw, frames)
         vis.destroy_window()
+    if row != "first_png":
+        return out
     path = os.path.join(tempfile.mkdtemp(), "first.png")
     t0 = time.perf_counter()
-    vis = o3d.visualization.Visualizer()
-    vis.create_window(width=WIDTH, height=HEIGHT, visible=False)
-    vis.add_geometry(pcd)
+    vis = lib.visualization.Visualizer()
+    vis.create_window(width=WIDTH, height=HEIGHT, visible=visible)
+    vis.add_geometry(geoms["cloud"])
     vis.capture_screen_image(path, do_render=True)
     out["first_png"] = time.perf_counter() - t0
     vis.destroy_window()
     if not os.path.exists(path):
-        out["first_png"] = float("nan")
+        raise RuntimeError("the first PNG was not written")
     return out
+
+
+def o3d_offscreen_rows(lib, geoms, frames, row):
+    rendering = lib.visualization.rendering
+    out = {}
+    for name, geometry in geoms.items():
+        if name != row:
+            continue
+        r = rendering.OffscreenRenderer(WIDTH, HEIGHT, backend="egl")
+        material = rendering.MaterialRecord()
+        material.point_size = 2
+        r.scene.add_geometry(name, geometry, material)
+        r.setup_camera_lookat([0, 0, 0], [0.3, -0.5, 1], [0, 1, 0], 0.8)
+        out[name] = fps(r.render_to_image, frames)
+        del r
+    if row != "first_png":
+        return out
+    path = os.path.join(tempfile.mkdtemp(), "first.png")
+    t0 = time.perf_counter()
+    r = rendering.OffscreenRenderer(WIDTH, HEIGHT, backend="egl")
+    r.scene.add_geometry("cloud", geoms["cloud"], rendering.MaterialRecord())
+    r.render_to_png(path)
+    out["first_png"] = time.perf_counter() - t0
+    return out
+
+
+def run_library(which, mode, frames, row):
+    lib = __import__("o3d" if which == "o3d" else "open3d")
+    geoms = geometries(lib)
+    if mode == "onscreen":
+        return visualizer_rows(lib, geoms, frames, True, row)
+    if which == "o3d":
+        return o3d_offscreen_rows(lib, geoms, frames, row)
+    return visualizer_rows(lib, geoms, frames, False, row)
 
 
 def gl_renderer_name():
     try:
-        import subprocess
         text = subprocess.run(["glxinfo", "-B"], capture_output=True, text=True, timeout=10).stdout
         for line in text.splitlines():
             if "OpenGL renderer string" in line:
@@ -125,36 +157,52 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--frames", type=int, default=15)
     ap.add_argument("--out", default=None, help="append the Markdown table to this file")
+    ap.add_argument("--library", choices=("o3d", "open3d"), help=argparse.SUPPRESS)  # a child process
+    ap.add_argument("--mode", choices=("offscreen", "onscreen"), help=argparse.SUPPRESS)
+    ap.add_argument("--row", choices=("cloud", "mesh", "first_png"), help=argparse.SUPPRESS)
     args = ap.parse_args()
+    if args.library:
+        print(json.dumps(run_library(args.library, args.mode, args.frames, args.row)))
+        return 0
+    if not os.environ.get("DISPLAY"):
+        sys.exit("the on-screen rows need an X display: run under xvfb-run")
 
-    import o3d
-    import open3d
-
-    points, colors = cloud_points()
-    rows = {"o3d (EGL)": o3d_rows(o3d, points, colors, args.frames, "egl")}
-    if os.environ.get("DISPLAY"):
-        rows["o3d (GLFW, hidden window)"] = o3d_rows(o3d, points, colors, args.frames, "glfw")
-    rows["Open3D legacy Visualizer (hidden window)"] = open3d_rows(open3d, points, colors, args.frames)
-    base = rows["o3d (EGL)"]
-
+    results = {"o3d": {}, "open3d": {}}
+    versions = {}
+    for which in ("o3d", "open3d"):
+        for mode in ("offscreen", "onscreen"):
+            results[which][mode] = {}
+            # A process per row: Open3D's legacy viewer draws empty frames in a window opened after another
+            # one was destroyed in the same process (seen here with 0.20), which a shared process would time.
+            for row in ("cloud", "mesh", "first_png"):
+                child = subprocess.run([sys.executable, __file__, "--library", which, "--mode", mode, "--row", row,
+                                        "--frames", str(args.frames)], capture_output=True, text=True)
+                if child.returncode != 0:
+                    sys.exit(f"{which} {mode} {row} failed:\n{child.stderr[-2000:]}")
+                results[which][mode].update(json.loads(child.stdout.strip().splitlines()[-1]))
+        versions[which] = subprocess.run([sys.executable, "-c", f"import {which}; print({which}.__version__)"],
+                                         capture_output=True, text=True).stdout.strip()
+    mine, peer = results["o3d"], results["open3d"]
     lines = [
         "## Rendering (`bench/visualization_bench.py`)",
         "",
         f"- Date: {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; machine: {platform.processor() or platform.machine()}, "
-        f"{os.cpu_count()} logical CPUs; o3d {o3d.__version__}, open3d {open3d.__version__}, python {platform.python_version()}",
+        f"{os.cpu_count()} logical CPUs; o3d {versions['o3d']}, open3d {versions['open3d']}, python {platform.python_version()}",
         f"- Software rendering, no GPU: Mesa llvmpipe for both (X server: Xvfb; GL renderer: {gl_renderer_name()}).",
-        f"- {WIDTH} x {HEIGHT}, point size 2; each frame renders and reads the image back; median of {args.frames} "
-        "frames after 2 warm-up frames. Ratio = o3d (EGL) FPS / peer FPS, and peer time / o3d time for the first PNG.",
+        f"- {WIDTH} x {HEIGHT}, point size 2; each frame renders and reads the image back, and is checked to show the "
+        f"geometry; median of {args.frames} frames after 2 warm-up frames; each library in its own process. "
+        "Offscreen: o3d's OffscreenRenderer (EGL) against Open3D's hidden Visualizer window; on screen: a visible "
+        "Visualizer window on Xvfb for both. Ratio = o3d FPS / Open3D FPS, and Open3D time / o3d time for the first PNG.",
         "",
-        "| row | " + " | ".join(rows) + " | o3d / Open3D |",
-        "|---|" + "---:|" * (len(rows) + 1),
+        f"| row | o3d | Open3D {versions['open3d']} legacy | o3d / Open3D |",
+        "|---|---:|---:|---:|",
     ]
-    peer = rows["Open3D legacy Visualizer (hidden window)"]
-    for key, label in (("cloud", "FPS, 1M-point colored cloud"), ("mesh", "FPS, 500k-triangle mesh (vertex normals)")):
-        lines.append(f"| {label} | " + " | ".join(f"{r[key]:.1f}" for r in rows.values()) +
-                     f" | {base[key] / peer[key]:.2f}x |")
-    lines.append("| call to first PNG, 1M-point cloud | " + " | ".join(f"{r['first_png'] * 1e3:.0f} ms" for r in rows.values()) +
-                 f" | {peer['first_png'] / base['first_png']:.2f}x |")
+    for mode, mode_label in (("offscreen", "offscreen"), ("onscreen", "on screen (Xvfb window)")):
+        for key, label in (("cloud", "FPS, 1M-point colored cloud"), ("mesh", "FPS, 1M-triangle sphere (vertex normals)")):
+            a, b = mine[mode][key], peer[mode][key]
+            lines.append(f"| {label}, {mode_label} | {a:.1f} | {b:.1f} | {a / b:.2f}x |")
+        a, b = mine[mode]["first_png"], peer[mode]["first_png"]
+        lines.append(f"| call to first PNG, 1M-point cloud, {mode_label} | {a * 1e3:.0f} ms | {b * 1e3:.0f} ms | {b / a:.2f}x |")
     text = "\n".join(lines) + "\n"
     print(text)
     if args.out:

@@ -44,9 +44,8 @@ o3d_status add_geometry(const char* function, o3d_visualizer_t* v, const char* n
     return guard(function, [&] {
         auto& visualizer = of(v);
         require(handle, "geometry");
-        const std::string key = require(name, "name");
-        if (key.empty()) throw o3d::InvalidArgument("a geometry needs a non-empty name");
-        visualizer.add_geometry(key, handle->*member, reset_bounding_box != 0);
+        // An empty name is refused by the renderer's add, with the same message.
+        visualizer.add_geometry(require(name, "name"), handle->*member, reset_bounding_box != 0);
     });
 }
 

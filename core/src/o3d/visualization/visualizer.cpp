@@ -77,9 +77,7 @@ void Visualizer::destroy_window() {
     window_ = nullptr;
     view_.reset();
     visible_ = false;
-    editing_name_.clear();
-    editing_points_.clear();
-    picked_.clear();
+    forget_editing();
 }
 
 template <typename Geometry>
@@ -111,9 +109,7 @@ void Visualizer::remove_geometry(const std::string& name, bool reset_bounding_bo
     require_window("remove_geometry");
     renderer_->remove(name);
     if (name == editing_name_) {
-        editing_name_.clear();
-        editing_points_.clear();
-        picked_.clear();
+        forget_editing();
     }
     if (reset_bounding_box) reset_view_point();
     redraw_ = true;
@@ -122,9 +118,7 @@ void Visualizer::remove_geometry(const std::string& name, bool reset_bounding_bo
 void Visualizer::clear_geometries() {
     require_window("clear_geometries");
     renderer_->clear();
-    editing_name_.clear();
-    editing_points_.clear();
-    picked_.clear();
+    forget_editing();
     redraw_ = true;
 }
 
@@ -153,11 +147,22 @@ void Visualizer::reset_view_point() {
     redraw_ = true;
 }
 
+void Visualizer::aim_camera() {
+    const camera::PinholeCameraParameters camera = view_->to_pinhole();
+    renderer_->setup_camera(camera.intrinsic, camera.extrinsic);
+}
+
+void Visualizer::forget_editing() {
+    editing_name_.clear();
+    editing_points_.clear();
+    picked_.clear();
+}
+
 void Visualizer::draw_if_needed() {
     if (!redraw_ || !renderer_) return;
     redraw_ = false;
     if (!window_) return;  // a hidden context draws when something is captured
-    renderer_->setup_camera(view_->to_pinhole().intrinsic, view_->to_pinhole().extrinsic);
+    aim_camera();
     renderer_->render_to_window([this] { glfw().swap_buffers(window_->handle()); });
 }
 
@@ -251,15 +256,13 @@ void Visualizer::scroll(double, double dy) {
 
 geometry::Image Visualizer::capture_screen() {
     require_window("capture_screen");
-    const auto camera = view_->to_pinhole();
-    renderer_->setup_camera(camera.intrinsic, camera.extrinsic);
+    aim_camera();
     return renderer_->render_to_image();
 }
 
 geometry::Image Visualizer::capture_depth() {
     require_window("capture_depth");
-    const auto camera = view_->to_pinhole();
-    renderer_->setup_camera(camera.intrinsic, camera.extrinsic);
+    aim_camera();
     return renderer_->render_to_depth_image(true);
 }
 

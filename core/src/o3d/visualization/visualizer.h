@@ -112,6 +112,10 @@ private:
     void require_window(const char* what) const;
     void default_key_action(int key, int mods);
     void draw_if_needed();
+    /// @brief The renderer's camera from the view control (before each frame and capture).
+    void aim_camera();
+    /// @brief Drop the editing geometry's points and the picks into it.
+    void forget_editing();
     template <typename F>
     void from_window(F&& f);  // runs an input handler from a GLFW callback, keeping its exception for later
     static void install_input(GlfwWindow& window);

@@ -78,6 +78,27 @@ TEST(Visualizer, BuiltinKeysByTheirEffect) {
     EXPECT_FALSE(vis.poll_events());
 }
 
+// Captures read the frame already drawn when nothing changed (no second draw), so every change must show.
+TEST(Visualizer, CapturesFollowEveryChange) {
+    Visualizer vis = window({1, 0, 0});
+    const int front_view = background_pixels(vis);
+    EXPECT_EQ(background_pixels(vis), front_view);
+    vis.rotate(150, 0);  // the cube turned by 26 degrees about the vertical
+    const int turned = background_pixels(vis);
+    EXPECT_NE(turned, front_view);
+    TriangleMesh cube = TriangleMesh::create_box(1, 1, 1);
+    cube.translate({-0.5, -0.5, -0.5});
+    cube.paint_uniform_color({0, 1, 0});
+    vis.add("cube", cube, false);  // an update under the same name, the view kept
+    EXPECT_EQ(rgb_at(vis, W / 2, H / 2), (Vec3{0, 1, 0}));
+    EXPECT_EQ(background_pixels(vis), turned);
+    const auto depth = vis.capture_depth_float_buffer().to_values<float>();
+    EXPECT_GT(depth[(H / 2) * W + W / 2], 0.0f);  // the same frame's depth, read after its colour
+    EXPECT_EQ(depth[0], 0.0f);
+    vis.update_renderer();
+    EXPECT_EQ(background_pixels(vis), turned);
+}
+
 TEST(Visualizer, KeyCallbacksChangeTheCapture) {
     Visualizer vis = window({1, 0, 0});
     int calls = 0;

@@ -33,13 +33,40 @@ void check_gl(const char* what) {
     }
 }
 
-void set_uniform_color(const ShaderProgram& p, ColorMode mode, const Eigen::Vector3d& color = Eigen::Vector3d::Zero()) {
-    glUniform1i(p.color_mode, int(mode));
-    glUniform3f(p.uniform_color, float(color.x()), float(color.y()), float(color.z()));
-}
-
 ColorMode jet_mode(ColorOption option) {
     return option == ColorOption::X ? ColorMode::JetX : option == ColorOption::Y ? ColorMode::JetY : ColorMode::JetZ;
+}
+
+}  // namespace
+
+/// @brief What every program gets each frame: the camera, the scene's box, the lights.
+struct FrameUniforms {
+    Eigen::Matrix4f mvp;
+    Eigen::Vector3f eye, ambient, box_min, box_max;
+    float light_position[12], light_color[12], light_diffuse[4], light_specular[4], light_shininess[4];
+    double extent = 0;
+};
+
+namespace {
+
+/// @brief Makes `p` current and sets its uniforms (those the variant lacks have location -1: ignored).
+void use_program(const ShaderProgram& p, const FrameUniforms& f, const Material& m, const Eigen::Vector3d& color,
+                 float normal_line_length) {
+    glUseProgram(p.id);
+    glUniformMatrix4fv(p.mvp, 1, GL_FALSE, f.mvp.data());
+    glUniform4f(p.base_color, float(m.base_color[0]), float(m.base_color[1]), float(m.base_color[2]),
+                float(m.base_color[3]));
+    glUniform3f(p.uniform_color, float(color.x()), float(color.y()), float(color.z()));
+    glUniform1f(p.normal_line_length, normal_line_length);
+    glUniform3fv(p.box_min, 1, f.box_min.data());
+    glUniform3fv(p.box_max, 1, f.box_max.data());
+    glUniform3fv(p.eye, 1, f.eye.data());
+    glUniform3fv(p.ambient, 1, f.ambient.data());
+    glUniform3fv(p.light_position, 4, f.light_position);
+    glUniform3fv(p.light_color, 4, f.light_color);
+    glUniform1fv(p.light_diffuse, 4, f.light_diffuse);
+    glUniform1fv(p.light_specular, 4, f.light_specular);
+    glUniform1fv(p.light_shininess, 4, f.light_shininess);
 }
 
 }  // namespace
@@ -63,7 +90,7 @@ OffscreenRenderer::OffscreenRenderer(int width, int height, std::unique_ptr<GLCo
                               std::to_string(height));
     backend_ = context_->backend();
     CurrentContext current(*context_);
-    program_ = build_shader_program();
+    programs_.get(ShaderVariant());  // a driver that cannot build o3d's programs fails here, not at the first render
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glGenRenderbuffers(1, &color_buffer_);
@@ -84,7 +111,7 @@ OffscreenRenderer::~OffscreenRenderer() {
     if (!context_) return;
     CurrentContext current(*context_);
     for (auto& entry : scene_) entry.second.release();
-    if (program_.id) glDeleteProgram(program_.id);
+    programs_.release();
     if (depth_buffer_) glDeleteRenderbuffers(1, &depth_buffer_);
     if (color_buffer_) glDeleteRenderbuffers(1, &color_buffer_);
     if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
@@ -112,6 +139,7 @@ void OffscreenRenderer::add(const std::string& name, const Geometry& geometry, c
         } else {
             scene_.emplace(name, std::move(uploaded));
         }
+        ++changes_;
     } catch (...) {
         uploaded.release();
         throw;
@@ -136,6 +164,7 @@ void OffscreenRenderer::remove(const std::string& name) {
     CurrentContext current(*context_);
     it->second.release();
     scene_.erase(it);
+    ++changes_;
 }
 
 void OffscreenRenderer::clear() {
@@ -143,12 +172,19 @@ void OffscreenRenderer::clear() {
     CurrentContext current(*context_);
     for (auto& entry : scene_) entry.second.release();
     scene_.clear();
+    ++changes_;
 }
 
 void OffscreenRenderer::set_render_option(const RenderOption& option) {
     check_render_option(option);
     std::lock_guard<std::mutex> lock(mutex_);
     option_ = option;
+    ++changes_;
+}
+
+void OffscreenRenderer::invalidate() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++changes_;
 }
 
 RenderOption OffscreenRenderer::render_option() {
@@ -165,8 +201,14 @@ void OffscreenRenderer::setup_camera(const camera::PinholeCameraIntrinsic& k, co
         throw InvalidArgument("intrinsic needs finite values and fx, fy > 0");
     check_rigid(extrinsic);
     std::lock_guard<std::mutex> lock(mutex_);
+    const camera::PinholeCameraIntrinsic& old = camera_->pinhole.intrinsic;
+    const bool same = camera_->kind == CameraSetting::Kind::Pinhole && old.width == k.width &&
+                      old.height == k.height && old.fx == k.fx && old.fy == k.fy && old.cx == k.cx &&
+                      old.cy == k.cy && camera_->pinhole.extrinsic == extrinsic;
+    if (same) return;  // a viewer aims the camera before every frame: the same view keeps the frame current
     camera_->kind = CameraSetting::Kind::Pinhole;
     camera_->pinhole = {k, extrinsic};
+    ++changes_;
 }
 
 void OffscreenRenderer::setup_camera_lookat(const Eigen::Vector3d& lookat, const Eigen::Vector3d& front,
@@ -178,6 +220,7 @@ void OffscreenRenderer::setup_camera_lookat(const Eigen::Vector3d& lookat, const
     camera_->b = front;
     camera_->up = up;
     camera_->scalar = zoom;
+    ++changes_;
 }
 
 void OffscreenRenderer::setup_camera_fov(double fov, const Eigen::Vector3d& center, const Eigen::Vector3d& eye,
@@ -189,6 +232,7 @@ void OffscreenRenderer::setup_camera_fov(double fov, const Eigen::Vector3d& cent
     camera_->b = eye;
     camera_->up = up;
     camera_->scalar = fov;
+    ++changes_;
 }
 
 camera::PinholeCameraParameters OffscreenRenderer::camera() {
@@ -234,24 +278,22 @@ camera::PinholeCameraParameters OffscreenRenderer::resolve_camera(const SceneBox
                             width_, height_);
 }
 
-void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp, double scene_extent) {
-    const ShaderProgram& p = program_;
+void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const FrameUniforms& f) {
     const RenderOption& o = option_;
     const Material& m = g.material;
     const bool lit_material = o.light_on && m.shader == Shader::DefaultLit;
-    glUniformMatrix4fv(p.mvp, 1, GL_FALSE, mvp.data());
-    glUniform4f(p.base_color, float(m.base_color[0]), float(m.base_color[1]), float(m.base_color[2]),
-                float(m.base_color[3]));
-    glUniform1f(p.normal_line_length, 0.0f);
-    glUniform1i(p.textured, 0);
+    auto use = [&](ColorMode mode, bool lit, const Eigen::Vector3d& color = Eigen::Vector3d::Zero(),
+                   float normal_line_length = 0.0f) -> const ShaderProgram& {
+        const ShaderProgram& p = programs_.get({mode, lit, normal_line_length > 0.0f});
+        use_program(p, f, m, color, normal_line_length);
+        return p;
+    };
     switch (g.kind) {
         case GeometryKind::Image: {
             // Flat on the frame, under everything else: identity transform, no lights, no depth.
+            const ShaderProgram& p = use(ColorMode::Texture, false);
             const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
             glUniformMatrix4fv(p.mvp, 1, GL_FALSE, identity.data());
-            set_uniform_color(p, ColorMode::Texture);
-            glUniform1i(p.lit, 0);
-            glUniform1i(p.textured, 1);
             glDisable(GL_CULL_FACE);
             glDepthMask(GL_FALSE);
             glDisable(GL_DEPTH_TEST);
@@ -266,21 +308,17 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
         }
         case GeometryKind::PointCloud: {
             const double size = m.point_size > 0 ? m.point_size : o.point_size;
-            if (o.point_color == ColorOption::Normal)
-                set_uniform_color(p, g.has_normals ? ColorMode::Normal : ColorMode::Uniform);
+            ColorMode mode = jet_mode(o.point_color);
+            if (o.point_color == ColorOption::Normal) mode = g.has_normals ? ColorMode::Normal : ColorMode::Uniform;
             else if (o.point_color == ColorOption::Default || o.point_color == ColorOption::Color)
-                set_uniform_color(p, g.has_colors ? ColorMode::Attribute : ColorMode::JetZ);
-            else
-                set_uniform_color(p, jet_mode(o.point_color));
-            glUniform1i(p.lit, lit_material && g.has_normals ? 1 : 0);  // Open3D lights clouds that have normals
+                mode = g.has_colors ? ColorMode::Attribute : ColorMode::JetZ;
+            use(mode, lit_material && g.has_normals);  // Open3D lights clouds that have normals
             glDisable(GL_CULL_FACE);
             glPointSize(float(size));
             glBindVertexArray(g.main.vao);
             glDrawArrays(GL_POINTS, 0, g.main.count);
             if (o.point_show_normal && g.normal_lines.vao) {
-                glUniform1i(p.lit, 0);
-                set_uniform_color(p, ColorMode::Uniform);
-                glUniform1f(p.normal_line_length, float(size * 0.01 * scene_extent));
+                use(ColorMode::Uniform, false, Eigen::Vector3d::Zero(), float(size * 0.01 * f.extent));
                 glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
                 glBindVertexArray(g.normal_lines.vao);
                 glDrawArrays(GL_LINES, 0, g.normal_lines.count);
@@ -288,8 +326,7 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
             break;
         }
         case GeometryKind::LineSet:
-            set_uniform_color(p, g.has_colors ? ColorMode::Attribute : ColorMode::Uniform);
-            glUniform1i(p.lit, 0);
+            use(g.has_colors ? ColorMode::Attribute : ColorMode::Uniform, false);
             glDisable(GL_CULL_FACE);
             glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
             glBindVertexArray(g.main.vao);
@@ -299,11 +336,11 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
         case GeometryKind::VoxelGrid: {
             const bool colored = g.has_colors && (o.mesh_color == ColorOption::Color ||
                                                   (g.kind == GeometryKind::VoxelGrid && o.mesh_color == ColorOption::Default));
-            if (o.mesh_color == ColorOption::Normal) set_uniform_color(p, ColorMode::Normal);
+            ColorMode mode = jet_mode(o.mesh_color);
+            if (o.mesh_color == ColorOption::Normal) mode = ColorMode::Normal;
             else if (o.mesh_color == ColorOption::Default || o.mesh_color == ColorOption::Color)
-                set_uniform_color(p, colored ? ColorMode::Attribute : ColorMode::Uniform, o.default_mesh_color);
-            else set_uniform_color(p, jet_mode(o.mesh_color));
-            glUniform1i(p.lit, lit_material ? 1 : 0);
+                mode = colored ? ColorMode::Attribute : ColorMode::Uniform;
+            use(mode, lit_material, o.default_mesh_color);
             if (o.mesh_show_back_face) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             const bool smooth = o.mesh_shade == MeshShade::Smooth && g.smooth.vao;
@@ -322,8 +359,7 @@ void OffscreenRenderer::draw_geometry(const GpuGeometry& g, const Eigen::Matrix4
             glPolygonOffset(1.0f, 1.0f);
             draw_buffer();
             glDisable(GL_POLYGON_OFFSET_FILL);
-            glUniform1i(p.lit, 0);
-            set_uniform_color(p, ColorMode::Uniform);
+            use(ColorMode::Uniform, false);
             glLineWidth(float(m.line_width > 0 ? m.line_width : o.line_width));
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             draw_buffer();
@@ -350,53 +386,52 @@ std::pair<double, double> OffscreenRenderer::draw_scene() {
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
 
-    const Eigen::Matrix4f mvp = (gl_projection(cam.intrinsic, z_near, z_far) * gl_view(cam.extrinsic)).cast<float>();
+    FrameUniforms f;
+    f.mvp = (gl_projection(cam.intrinsic, z_near, z_far) * gl_view(cam.extrinsic)).cast<float>();
     const Eigen::Matrix3d r = cam.extrinsic.block<3, 3>(0, 0);
     const Eigen::Vector3d eye = -r.transpose() * cam.extrinsic.block<3, 1>(0, 3);
     const Eigen::Vector3d right = r.row(0).transpose(), up = -r.row(1).transpose(), front = -r.row(2).transpose();
-
-    const ShaderProgram& p = program_;
-    glUseProgram(p.id);
-    glUniform3f(p.eye, float(eye.x()), float(eye.y()), float(eye.z()));
-    glUniform3f(p.ambient, float(o.light_ambient_color.x()), float(o.light_ambient_color.y()),
-                float(o.light_ambient_color.z()));
-    glUniform3f(p.box_min, float(box.min_bound.x()), float(box.min_bound.y()), float(box.min_bound.z()));
-    glUniform3f(p.box_max, float(box.max_bound.x()), float(box.max_bound.y()), float(box.max_bound.z()));
-    float positions[12], colors[12], diffuse[4], specular[4], shininess[4];
+    f.eye = eye.cast<float>();
+    f.ambient = o.light_ambient_color.cast<float>();
+    f.box_min = box.min_bound.cast<float>();
+    f.box_max = box.max_bound.cast<float>();
+    f.extent = box.max_extent();
     for (int i = 0; i < 4; ++i) {
         const Light& light = o.lights[i];
         const Eigen::Vector3d at = box.center() + box.max_extent() * (light.position.x() * right +
                                                                       light.position.y() * up +
                                                                       light.position.z() * front);
         for (int k = 0; k < 3; ++k) {
-            positions[3 * i + k] = float(at[k]);
-            colors[3 * i + k] = float(light.color[k]);
+            f.light_position[3 * i + k] = float(at[k]);
+            f.light_color[3 * i + k] = float(light.color[k]);
         }
-        diffuse[i] = float(light.diffuse_power);
-        specular[i] = float(light.specular_power);
-        shininess[i] = float(light.specular_shininess);
+        f.light_diffuse[i] = float(light.diffuse_power);
+        f.light_specular[i] = float(light.specular_power);
+        f.light_shininess[i] = float(light.specular_shininess);
     }
-    glUniform3fv(p.light_position, 4, positions);
-    glUniform3fv(p.light_color, 4, colors);
-    glUniform1fv(p.light_diffuse, 4, diffuse);
-    glUniform1fv(p.light_specular, 4, specular);
-    glUniform1fv(p.light_shininess, 4, shininess);
 
     // Images first: they lie flat under the 3D geometry.
     for (const auto& entry : scene_)
-        if (entry.second.kind == GeometryKind::Image) draw_geometry(entry.second, mvp, box.max_extent());
+        if (entry.second.kind == GeometryKind::Image) draw_geometry(entry.second, f);
     for (const auto& entry : scene_)
-        if (entry.second.kind != GeometryKind::Image) draw_geometry(entry.second, mvp, box.max_extent());
+        if (entry.second.kind != GeometryKind::Image) draw_geometry(entry.second, f);
     glUseProgram(0);
     glFinish();
     check_gl("drawing the scene");
+    drawn_ = changes_;
+    drawn_near_far_ = {z_near, z_far};
     return {z_near, z_far};
 }
 
-geometry::Image OffscreenRenderer::render_to_image() {
+std::pair<double, double> OffscreenRenderer::frame(Frame frame) {
+    if (frame == Frame::ReuseIfCurrent && drawn_ == changes_) return drawn_near_far_;
+    return draw_scene();
+}
+
+geometry::Image OffscreenRenderer::render_to_image(Frame reuse) {
     std::lock_guard<std::mutex> lock(mutex_);
     CurrentContext current(*context_);
-    draw_scene();
+    frame(reuse);
     geometry::Image image;
     image.width = width_;
     image.height = height_;
@@ -414,10 +449,10 @@ geometry::Image OffscreenRenderer::render_to_image() {
     return image;
 }
 
-geometry::Image OffscreenRenderer::render_to_depth_image(bool z_in_view_space) {
+geometry::Image OffscreenRenderer::render_to_depth_image(bool z_in_view_space, Frame reuse) {
     std::lock_guard<std::mutex> lock(mutex_);
     CurrentContext current(*context_);
-    const auto [n, f] = draw_scene();
+    const auto [n, f] = frame(reuse);
     std::vector<float> depth(size_t(width_) * size_t(height_));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());

@@ -5,6 +5,7 @@
 /// drawn in the style of its legacy Visualizer), and reads back colour and depth.
 #include <map>
 #include <memory>
+#include <cstdint>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -18,6 +19,8 @@
 #include "o3d/visualization/view_camera.h"
 
 namespace o3d::visualization {
+
+struct FrameUniforms;
 
 class OffscreenRenderer {
 public:
@@ -59,8 +62,14 @@ public:
     /// @brief The context this renders with.
     GLContext& context() { return *context_; }
 
-    geometry::Image render_to_image();                       ///< RGB, 1 byte per channel
-    geometry::Image render_to_depth_image(bool z_in_view_space);  ///< float32
+    /// @brief Whether a read may return the frame last drawn: only when nothing that shapes it (geometry,
+    /// render option, camera; see invalidate) changed since. A viewer that has just drawn its window reads
+    /// that frame instead of drawing it again.
+    enum class Frame { Redraw, ReuseIfCurrent };
+    geometry::Image render_to_image(Frame frame = Frame::Redraw);  ///< RGB, 1 byte per channel
+    geometry::Image render_to_depth_image(bool z_in_view_space, Frame frame = Frame::Redraw);  ///< float32
+    /// @brief The next ReuseIfCurrent read draws (a viewer's update_renderer: the caller says something changed).
+    void invalidate();
     /// @brief Render, copy the frame to the context's default framebuffer (a window) and call `swap`
     /// while the context is still current.
     template <typename Swap>
@@ -79,18 +88,22 @@ private:
     camera::PinholeCameraParameters resolve_camera(const SceneBox& box) const;
     /// @brief One frame into the framebuffer; returns the near and far planes it used.
     std::pair<double, double> draw_scene();
-    void draw_geometry(const GpuGeometry& g, const Eigen::Matrix4f& mvp, double scene_extent);
+    /// @brief draw_scene, unless `frame` allows the one drawn last and it is current.
+    std::pair<double, double> frame(Frame frame);
+    void draw_geometry(const GpuGeometry& g, const FrameUniforms& frame);
     void blit_to_default_framebuffer();
 
     int width_, height_;
     Backend backend_;
     std::mutex mutex_;  // one call at a time: the context is bound for the duration of each
     std::unique_ptr<GLContext> context_;
-    ShaderProgram program_;
+    ShaderPrograms programs_;
     GLuint framebuffer_ = 0, color_buffer_ = 0, depth_buffer_ = 0;
     std::map<std::string, GpuGeometry> scene_;
     RenderOption option_;
     std::unique_ptr<CameraSetting> camera_;
+    uint64_t changes_ = 1, drawn_ = 0;  // changes_ counts what shapes a frame; drawn_ is its value at the last draw
+    std::pair<double, double> drawn_near_far_{0.0, 0.0};
 };
 
 }  // namespace o3d::visualization

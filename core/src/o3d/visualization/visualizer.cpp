@@ -137,6 +137,7 @@ void Visualizer::set_render_option(const RenderOption& option) {
 
 ViewControl& Visualizer::view_control() {
     require_window("get_view_control");
+    redraw_ = true;  // the caller may move the view: the window shows it at the next poll
     return *view_;
 }
 
@@ -254,16 +255,25 @@ void Visualizer::scroll(double, double dy) {
     redraw_ = true;
 }
 
+// A capture reads the frame the window shows, drawing it first when it is due (as Open3D's do_render), and
+// never draws one frame twice: the renderer redraws only when the view, the scene or the option changed.
 geometry::Image Visualizer::capture_screen() {
     require_window("capture_screen");
+    draw_if_needed();
     aim_camera();
-    return renderer_->render_to_image();
+    return renderer_->render_to_image(OffscreenRenderer::Frame::ReuseIfCurrent);
 }
 
 geometry::Image Visualizer::capture_depth() {
     require_window("capture_depth");
+    draw_if_needed();
     aim_camera();
-    return renderer_->render_to_depth_image(true);
+    return renderer_->render_to_depth_image(true, OffscreenRenderer::Frame::ReuseIfCurrent);
+}
+
+void Visualizer::update_renderer() {
+    redraw_ = true;
+    if (renderer_) renderer_->invalidate();  // the caller says the frame is stale, so it is drawn again
 }
 
 int Visualizer::pick_point(double x, double y) {

@@ -65,7 +65,7 @@ public:
     /// @brief Process window events and draw when needed; false once the window was closed.
     bool poll_events();
     /// @brief Draw at the next poll_events.
-    void update_renderer() { redraw_ = true; }
+    void update_renderer();
     /// @brief Until the window is closed: events, the animation callback, frames. A hidden window with no
     /// animation callback cannot be closed by anyone, so then run draws one frame and returns.
     void run();

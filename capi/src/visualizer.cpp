@@ -412,3 +412,33 @@ O3D_API o3d_status o3d_visualizer_play_view_trajectory(o3d_visualizer_t* v, cons
 }
 
 }  // extern "C"
+
+O3D_API o3d_status o3d_visualizer_is_selecting(o3d_bool* out, const o3d_visualizer_t* v) {
+    return guard(__func__, [&] { *require(out, "out") = require(v, "vis")->vis.selecting() ? 1 : 0; });
+}
+
+O3D_API o3d_status o3d_visualizer_crop_to_selection(o3d_visualizer_t* v) {
+    return guard(__func__, [&] { of(v).crop_to_selection(); });
+}
+
+O3D_API o3d_status o3d_visualizer_get_cropped_pointcloud(o3d_pointcloud_t** out, const o3d_visualizer_t* v) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        const auto& cropped = require(v, "vis")->vis.cropped_point_cloud();
+        if (cropped) *out = new o3d_pointcloud{*cropped};
+    });
+}
+
+O3D_API o3d_status o3d_visualizer_get_cropped_trianglemesh(o3d_trianglemesh_t** out, const o3d_visualizer_t* v) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = nullptr;
+        const auto& cropped = require(v, "vis")->vis.cropped_triangle_mesh();
+        if (cropped) *out = new o3d_trianglemesh{*cropped};
+    });
+}
+
+O3D_API o3d_status o3d_visualizer_set_crop_directory(o3d_visualizer_t* v, const char* directory) {
+    return guard(__func__, [&] { of(v).set_crop_directory(directory ? directory : ""); });
+}

@@ -24,5 +24,6 @@
 #include "o3d/octree.h"
 #include "o3d/visualization.h"
 #include "o3d/visualizer.h"
+#include "o3d/selection.h"
 
 #endif /* O3D_O3D_H */

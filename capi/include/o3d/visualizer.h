@@ -409,6 +409,59 @@ O3D_API o3d_status o3d_visualizer_capture_depth_image(o3d_visualizer_t* vis, con
  */
 O3D_API o3d_status o3d_visualizer_get_picked_points(int32_t* out, size_t capacity, size_t* out_count,
                                                     const o3d_visualizer_t* vis);
+/**
+ * @brief Whether the editing visualizer is selecting a region (key K locks the view for it: a left drag
+ * selects a rectangle, Ctrl + left clicks add polygon corners, C crops, K again leaves).
+ *
+ * Threads: the visualizer's thread.
+ * @param out receives 1 while selecting, else 0
+ * @param vis the visualizer
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_visualizer_is_selecting(o3d_bool* out, const o3d_visualizer_t* vis);
+/**
+ * @brief VisualizerWithEditing's crop (key C): keep the part of the first geometry (a point cloud or a
+ * mesh: the triangles whose three vertices are kept) whose points project inside the selection, in front
+ * of the camera; show it in place of the whole, clear the picks and leave selecting. With a crop directory
+ * it is also written there as cropped_<n>.ply.
+ *
+ * Threads: the visualizer's thread.
+ * @param vis the visualizer (with a window)
+ * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL `vis`, no window, no cloud or mesh to crop, or a
+ *   selection of fewer than 3 corners; O3D_ERROR_IO when the file cannot be written (the crop is kept).
+ */
+O3D_API o3d_status o3d_visualizer_crop_to_selection(o3d_visualizer_t* vis);
+/**
+ * @brief VisualizerWithEditing.get_cropped_geometry for a cropped point cloud: a copy of the last crop.
+ *
+ * Threads: the visualizer's thread.
+ * Ownership: `*out` belongs to the caller (o3d_pointcloud_destroy); NULL when the last crop was not of a
+ * point cloud or nothing was cropped.
+ * @param out receives the new cloud or NULL
+ * @param vis the visualizer
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_visualizer_get_cropped_pointcloud(o3d_pointcloud_t** out, const o3d_visualizer_t* vis);
+/**
+ * @brief The last crop when it was of a triangle mesh (see o3d_visualizer_get_cropped_pointcloud).
+ *
+ * Threads: the visualizer's thread.
+ * Ownership: `*out` belongs to the caller (o3d_trianglemesh_destroy); NULL when there is none.
+ * @param out receives the new mesh or NULL
+ * @param vis the visualizer
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_visualizer_get_cropped_trianglemesh(o3d_trianglemesh_t** out, const o3d_visualizer_t* vis);
+/**
+ * @brief Where crops are written as cropped_1.ply, cropped_2.ply, ... (Open3D's `directory` without its
+ * file dialog).
+ *
+ * Threads: the visualizer's thread.
+ * @param vis the visualizer
+ * @param directory an existing directory, or NULL or "" not to write crops
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `vis`.
+ */
+O3D_API o3d_status o3d_visualizer_set_crop_directory(o3d_visualizer_t* vis, const char* directory);
 
 /* ---- ViewControl ---- */
 

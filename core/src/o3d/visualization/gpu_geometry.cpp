@@ -285,4 +285,17 @@ GpuGeometry upload(const geometry::Image& image, int width, int height) {
     return g;
 }
 
+GpuGeometry upload_outline(const std::vector<Eigen::Vector2d>& pixels, int width, int height) {
+    GpuGeometry g;
+    g.kind = GeometryKind::LineSet;
+    g.material.shader = Shader::DefaultUnlit;
+    std::vector<Vertex> vertices;
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector2d& p : pixels)  // pixel centres, as gl_projection maps them
+        vertices.push_back(vertex(Eigen::Vector3d(2.0 * (p.x() + 0.5) / width - 1.0, 1.0 - 2.0 * (p.y() + 0.5) / height, 0),
+                                  zero, zero));
+    g.main = make_buffer(vertices);
+    return g;
+}
+
 }  // namespace o3d::visualization

@@ -45,5 +45,8 @@ GpuGeometry upload(const geometry::VoxelGrid& grid, const Material& material);
 /// keeping its aspect ratio, centred). 1, 3 or 4 channels of uint8; one channel of uint16 or float32 is
 /// shown as gray scaled to its largest value; 3 channels of float32 are clamped to [0, 1].
 GpuGeometry upload(const geometry::Image& image, int width, int height);
+/// @brief A closed outline through window pixels (x right, y down) of a `width` x `height` frame, in normalized
+/// device coordinates: drawn over the scene as is (VisualizerWithEditing's selection).
+GpuGeometry upload_outline(const std::vector<Eigen::Vector2d>& pixels, int width, int height);
 
 }  // namespace o3d::visualization

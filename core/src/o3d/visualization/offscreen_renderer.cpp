@@ -111,6 +111,7 @@ OffscreenRenderer::~OffscreenRenderer() {
     if (!context_) return;
     CurrentContext current(*context_);
     for (auto& entry : scene_) entry.second.release();
+    outline_.release();
     programs_.release();
     if (depth_buffer_) glDeleteRenderbuffers(1, &depth_buffer_);
     if (color_buffer_) glDeleteRenderbuffers(1, &color_buffer_);
@@ -180,6 +181,16 @@ void OffscreenRenderer::set_render_option(const RenderOption& option) {
     std::lock_guard<std::mutex> lock(mutex_);
     option_ = option;
     ++changes_;
+}
+
+void OffscreenRenderer::set_outline(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d& color) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    CurrentContext current(*context_);
+    outline_.release();
+    if (pixels.size() >= 2) outline_ = upload_outline(pixels, width_, height_);
+    outline_color_ = color;
+    ++changes_;
+    check_gl("uploading an outline");
 }
 
 void OffscreenRenderer::invalidate() {
@@ -415,6 +426,17 @@ std::pair<double, double> OffscreenRenderer::draw_scene() {
         if (entry.second.kind == GeometryKind::Image) draw_geometry(entry.second, f);
     for (const auto& entry : scene_)
         if (entry.second.kind != GeometryKind::Image) draw_geometry(entry.second, f);
+    if (outline_.main.vao) {  // over everything: no transform, no depth test
+        FrameUniforms flat = f;
+        flat.mvp.setIdentity();
+        use_program(programs_.get({ColorMode::Uniform, false, false}), flat, Material{}, outline_color_, 0.0f);
+        glDisable(GL_DEPTH_TEST);
+        glLineWidth(1.0f);
+        glBindVertexArray(outline_.main.vao);
+        glDrawArrays(GL_LINE_LOOP, 0, outline_.main.count);
+        glBindVertexArray(0);
+        glEnable(GL_DEPTH_TEST);
+    }
     glUseProgram(0);
     glFinish();
     check_gl("drawing the scene");

@@ -68,6 +68,9 @@ public:
     enum class Frame { Redraw, ReuseIfCurrent };
     geometry::Image render_to_image(Frame frame = Frame::Redraw);  ///< RGB, 1 byte per channel
     geometry::Image render_to_depth_image(bool z_in_view_space, Frame frame = Frame::Redraw);  ///< float32
+    /// @brief A closed outline through window pixels, drawn over the scene in `color` (not part of the scene:
+    /// no name, no box); fewer than 2 pixels removes it.
+    void set_outline(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d& color);
     /// @brief The next ReuseIfCurrent read draws (a viewer's update_renderer: the caller says something changed).
     void invalidate();
     /// @brief Render, copy the frame to the context's default framebuffer (a window) and call `swap`
@@ -100,6 +103,8 @@ private:
     ShaderPrograms programs_;
     GLuint framebuffer_ = 0, color_buffer_ = 0, depth_buffer_ = 0;
     std::map<std::string, GpuGeometry> scene_;
+    GpuGeometry outline_;
+    Eigen::Vector3d outline_color_ = Eigen::Vector3d::Zero();
     RenderOption option_;
     std::unique_ptr<CameraSetting> camera_;
     uint64_t changes_ = 1, drawn_ = 0;  // changes_ counts what shapes a frame; drawn_ is its value at the last draw

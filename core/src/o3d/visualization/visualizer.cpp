@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <type_traits>
 #include <limits>
 
 #include "o3d/geometry/line_set.h"
@@ -84,12 +85,7 @@ template <typename Geometry>
 void Visualizer::add_geometry(const std::string& name, const Geometry& geometry, bool reset_bounding_box) {
     require_window("add_geometry");
     renderer_->add(name, geometry, Material{}, true);  // an update keeps the old one if the new one fails
-    if (editing_ && (editing_name_.empty() || editing_name_ == name)) {
-        if (const auto* vertices = vertices_of(geometry)) {
-            editing_name_ = name;
-            editing_points_ = *vertices;
-        }
-    }
+    if (editing_ && (editing_name_.empty() || editing_name_ == name)) remember_editing(name, geometry);
     if (reset_bounding_box) {
         SceneBox box = view_->bounding_box();
         box.add(renderer_->geometry_bounds(name));
@@ -156,7 +152,21 @@ void Visualizer::aim_camera() {
 void Visualizer::forget_editing() {
     editing_name_.clear();
     editing_points_.clear();
+    editing_cloud_.reset();
+    editing_mesh_.reset();
     picked_.clear();
+}
+
+template <typename Geometry>
+void Visualizer::remember_editing(const std::string& name, const Geometry& geometry) {
+    const auto* vertices = vertices_of(geometry);
+    if (!vertices) return;
+    editing_name_ = name;
+    editing_points_ = *vertices;
+    editing_cloud_.reset();
+    editing_mesh_.reset();
+    if constexpr (std::is_same_v<Geometry, geometry::PointCloud>) editing_cloud_ = geometry;
+    if constexpr (std::is_same_v<Geometry, geometry::TriangleMesh>) editing_mesh_ = geometry;
 }
 
 void Visualizer::draw_if_needed() {
@@ -224,7 +234,7 @@ void Visualizer::mouse_move(double x, double y) {
     const double dx = x - mouse_x_, dy = y - mouse_y_;
     mouse_x_ = x;
     mouse_y_ = y;
-    if (!view_ || buttons_down_ == 0) return;
+    if (!view_ || select_with_mouse_move() || buttons_down_ == 0) return;
     const bool left = buttons_down_ & (1 << keys::kMouseLeft);
     const bool middle = buttons_down_ & (1 << keys::kMouseMiddle);
     if (middle || (left && (mods_down_ & keys::kModControl))) view_->translate(dx, dy);
@@ -234,6 +244,7 @@ void Visualizer::mouse_move(double x, double y) {
 
 void Visualizer::mouse_button(int button, int action, int mods) {
     if (button < 0 || button > 7) return;
+    if (select_with_mouse_button(button, action, mods)) return;
     if (action == keys::kPress) {
         buttons_down_ |= 1 << button;
         mods_down_ = mods;

@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,20 @@ public:
     /// @brief Pick the point nearest to window pixel (x, y) among those visible within a few pixels; -1 if none.
     int pick_point(double x, double y);
 
+    // Cropping (VisualizerWithEditing), as Open3D's: K locks the view for selecting; a left drag selects a
+    // rectangle, Ctrl + left clicks add polygon corners; C keeps the part of the first geometry (a cloud or a
+    // mesh) whose points fall inside the selection on screen, shows it in place of the whole, and writes it
+    // to the crop directory when one is set. K again leaves selection without cropping.
+    bool selecting() const { return selecting_; }
+    /// @brief Crop the editing geometry to the selection now (key C); throws InvalidArgument without an
+    /// editing geometry or a selection of at least 3 corners.
+    void crop_to_selection();
+    /// @brief The last crop's result, if the editing geometry was a cloud (a mesh).
+    const std::optional<geometry::PointCloud>& cropped_point_cloud() const { return cropped_cloud_; }
+    const std::optional<geometry::TriangleMesh>& cropped_triangle_mesh() const { return cropped_mesh_; }
+    /// @brief Where each crop is written as cropped_<n>.ply ("" : not written).
+    void set_crop_directory(const std::string& directory) { crop_directory_ = directory; }
+
     /// @brief The view as Open3D's ViewTrajectory JSON with one view (key Ctrl+C), and back (throws ParseError).
     std::string view_status_json() const;
     void set_view_status_json(const std::string& json);
@@ -116,6 +131,13 @@ private:
     void aim_camera();
     /// @brief Drop the editing geometry's points and the picks into it.
     void forget_editing();
+    template <typename Geometry>
+    void remember_editing(const std::string& name, const Geometry& geometry);
+    void toggle_selecting();
+    /// @brief Mouse input while selecting; true when it was used.
+    bool select_with_mouse_button(int button, int action, int mods);
+    bool select_with_mouse_move();
+    void show_selection();
     template <typename F>
     void from_window(F&& f);  // runs an input handler from a GLFW callback, keeping its exception for later
     static void install_input(GlfwWindow& window);
@@ -137,6 +159,13 @@ private:
     std::string editing_name_;
     std::vector<Eigen::Vector3d> editing_points_;
     std::vector<int> picked_;
+    std::optional<geometry::PointCloud> editing_cloud_, cropped_cloud_;
+    std::optional<geometry::TriangleMesh> editing_mesh_, cropped_mesh_;
+    bool selecting_ = false, dragging_rectangle_ = false, selection_is_rectangle_ = false;
+    Eigen::Vector2d rectangle_start_ = Eigen::Vector2d::Zero();
+    std::vector<Eigen::Vector2d> selection_;  // window pixels
+    std::string crop_directory_;
+    int crops_ = 0;
     std::exception_ptr pending_;  // thrown inside a GLFW callback, rethrown after the event loop
 };
 

@@ -31,6 +31,8 @@ std::string Visualizer::help_text() {
            "  Ctrl + left drag     translate the view (also the middle button)\n"
            "  Wheel                zoom in or out\n"
            "  Shift + left click   pick a point (VisualizerWithEditing); Shift + right click drops the last\n"
+           "  K                    lock the view to select a region (VisualizerWithEditing): left drag for a\n"
+           "                       rectangle, Ctrl + left clicks for a polygon; C crops to it; K again leaves\n"
            "  H                    print this help\n"
            "  R                    reset the view\n"
            "  [ / ]                narrow / widen the field of view\n"
@@ -80,6 +82,10 @@ void Visualizer::default_key_action(int key, int mods) {
         }
         case GLFW_KEY_C:
             if (ctrl && window_) glfw().set_clipboard_string(window_->handle(), view_status_json().c_str());
+            else if (!ctrl && selecting_ && selection_.size() >= 3) crop_to_selection();
+            return;
+        case GLFW_KEY_K:
+            if (editing_) toggle_selecting();
             return;
         default: return;
     }

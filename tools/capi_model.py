@@ -11,7 +11,8 @@ followed directly by `#define`s (each documented, lines without a blank one betw
 group, e.g. `typedef int32_t o3d_shader;` + O3D_SHADER_*. Types in the model are resolved through them
 (`type` is the ABI type, e.g. int32_t, as the SWIG generator needs it) and keep the written name in
 `typedef`; o3d_status, the return-code type, stays as written. Doc comments (`/** */` before, `/**< */`
-after) are kept for structs, fields, constants and value typedefs.
+after) are kept for structs, fields, constants and value typedefs; a function keeps its `@brief` and each
+parameter its `@param` text (`doc`).
 
 Used by the dlopen test's function list (--c-names), the SWIG interface generator
 (tools/gen_swig_interface.py), the binding-table generator (tools/gen_binding_tables.py), the
@@ -93,6 +94,15 @@ def _brief_before(raw, pos):
     return _clean_doc(m.group(1)) if m else None
 
 
+def _param_docs_before(raw, pos):
+    """{parameter: its `@param` text} of the doc comment ending right before `pos`."""
+    head = raw[:pos].rstrip()
+    if not head.endswith("*/") or not head[head.rfind("/*"):].startswith("/**"):
+        return {}
+    block = head[head.rfind("/*") + 3:-2]
+    return {m.group(1): _clean_doc(m.group(2)) for m in re.finditer(r"@param\s+(\w+)\s(.*?)(?=\n\s*\*\s*@|$)", block, re.S)}
+
+
 def _mask_comments(text):
     """`text` with each comment blanked (offsets kept)."""
     return _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
@@ -144,8 +154,11 @@ def load(include_dir=INCLUDE_DIR):
         text = _COMMENT.sub("", raw)
         for m in _PROTO.finditer(_mask_comments(raw)):
             ret, name, args = m.groups()
+            params, docs = _params(args), _param_docs_before(raw, m.start())
+            for p in params:
+                p["doc"] = docs.get(p["name"])
             model["functions"].append({"name": name, "header": header.name, "ret": " ".join(ret.split()),
-                                       "params": _params(args), "brief": _brief_before(raw, m.start())})
+                                       "params": params, "brief": _brief_before(raw, m.start())})
         for m in _STRUCT.finditer(raw):
             tag, body, name = m.groups()
             fields = [_param(f) for f in _COMMENT.sub("", body).split(";") if f.strip()]

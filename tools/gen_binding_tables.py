@@ -1,18 +1,21 @@
 #!/usr/bin/env python3
-"""Generate the bindings' enums and option-struct field tables from the C headers (tools/capi_model.py).
+"""Generate the bindings' enums, option-struct field tables and pass-through methods from the C headers
+(tools/capi_model.py).
 
     python3 tools/gen_binding_tables.py           # rewrite the generated files (commit them with the header change)
     python3 tools/gen_binding_tables.py --check   # exit 1 when a committed file is stale (scripts/test.sh)
 
-Regenerate after any change to capi/include/o3d/*.h that touches a constant group, an options struct or
-their doc comments. What it writes (first line `@generated ...`; never edit them by hand):
+Regenerate after any change to capi/include/o3d/*.h that touches a constant group, an options struct, a function
+listed in a METHODS table or their doc comments. What it writes (first line `@generated ...`; never edit by hand):
   bindings/cpp/include/o3dpp/generated/enums.hpp    an `enum class` per constant group
   bindings/cpp/include/o3dpp/generated/options.hpp  the option structs over o3dpp::COptions
   bindings/cpp/include/o3dpp/generated/<header>.hpp detail::<Class>Calls, a base giving a class its pass-through
-                                                    methods (tools/binding_methods.py; CPP_METHODS)
+                                                    methods (tools/binding_methods.py; CPP_METHODS, CPP_CLASSES)
   bindings/python/src/generated/tables.h            py::enum_ definitions and per-struct field tables
+  bindings/python/src/generated/<header>_methods.h  def_<class>_methods(cls): the pass-through methods of a Python
+                                                    class (PY_METHODS, PY_CLASSES), called by its hand-written file
   bindings/rust/o3d/src/generated/<module>.rs        c_enum!/options! invocations and `impl` blocks of pass-through
-                                                    methods (RUST_METHODS), include!d by src/<module>.rs
+                                                    methods (RUST_METHODS, RUST_CLASSES), include!d by src/<module>.rs
 
 What the headers say, and how each language shows it:
   * a constant group is a value typedef followed by its #defines (`typedef int32_t o3d_shader;` +
@@ -24,6 +27,14 @@ What the headers say, and how each language shows it:
     -> that enum, `double x[N]` -> an array (Rust: R x C rows when the doc says "row-major RxC");
     `use_X` + `X` -> an optional X; `progress` + `user_data` -> the language's progress callback (C++;
     Rust and Python wire progress per call); `struct_size` is the init's.
+  * a pass-through method is a C function that is one call on a handle (tools/binding_methods.py says which
+    shapes and parameter kinds qualify): a method of the handle's class, or a static function for a constructor.
+    Its parameters are the C ones in C order, each in the language's type for its kind (a number, bool, enum,
+    count, seed, string, path, array or matrix, optional array, another class); it returns the value or new
+    object the call writes, else (a geometry's edit) the object itself to chain; its doc is the C @brief.
+    C++: const when the C handle is, trailing optional arrays as an overload without them; Rust: `Result<...>`,
+    an optional array as Option<[f64; N]>; Python: the call runs under the handle's lock with the GIL released,
+    keywords and defaults from PY_METHODS, a call that may reallocate arrays copy-on-write first (PY_RESIZING).
 Names that cannot be derived, and what a language leaves out or writes by hand, are the tables below.
 """
 import argparse
@@ -119,10 +130,77 @@ CPP_METHODS = {
     "o3d_offscreen_renderer_clear_geometries": ("clear", {}),
     "o3d_offscreen_renderer_setup_camera_lookat": (None, {"zoom": "0.7"}),
     "o3d_offscreen_renderer_setup_camera_fov": ("setup_camera", {}),
+    **{f"o3d_{noun}_{c}": (None, {"relative": "true"} if c == "translate" else {}) for noun in ("pointcloud", "trianglemesh")
+       for c in ("clear", "append", "transform", "translate", "rotate", "scale", "get_min_bound", "get_max_bound",
+                 "get_center", "paint_uniform_color", "normalize_normals")},
+    "o3d_pointcloud_size": ("size", {}),
+    "o3d_pointcloud_remove_non_finite_points": (None, {"remove_nan": "true", "remove_infinite": "true"}),
+    **{f"o3d_pointcloud_{c}": (None, {}) for c in (
+        "voxel_down_sample", "uniform_down_sample", "orient_normals_to_align_with_direction",
+        "orient_normals_towards_camera_location")},
+    "o3d_pointcloud_random_down_sample": (None, {"seed": "0"}),
+    "o3d_pointcloud_farthest_point_down_sample": (None, {"start_index": "0"}),
+    "o3d_pointcloud_crop_aabb": (None, {"invert": "false"}),
+    **{f"o3d_trianglemesh_{c}": (None, {}) for c in (
+        "num_vertices", "num_triangles", "texture_count", "add_texture", "clear_textures", "normalize_normals",
+        "remove_duplicated_vertices", "remove_duplicated_triangles", "remove_degenerate_triangles",
+        "remove_unreferenced_vertices", "remove_non_manifold_edges", "merge_close_vertices", "get_surface_area",
+        "get_volume", "is_watertight", "is_vertex_manifold", "is_self_intersecting", "is_orientable",
+        "euler_poincare_characteristic")},
+    "o3d_trianglemesh_get_texture": ("texture", {}),
+    "o3d_trianglemesh_compute_vertex_normals": (None, {"normalized": "true"}),
+    "o3d_trianglemesh_compute_triangle_normals": (None, {"normalized": "true"}),
+    "o3d_trianglemesh_is_edge_manifold": (None, {"allow_boundary_edges": "true"}),
+    "o3d_trianglemesh_sample_points_uniformly": (None, {"number_of_points": "100", "use_triangle_normal": "false",
+                                                        "seed": "0"}),
+    "o3d_trianglemesh_sample_points_poisson_disk": (None, {"init_factor": "5.0", "use_triangle_normal": "false",
+                                                           "seed": "0"}),
+    "o3d_trianglemesh_simplify_vertex_clustering": (None, {"contraction": "SimplificationContraction::Average"}),
+    "o3d_trianglemesh_simplify_quadric_decimation": (None, {
+        "maximum_error": "std::numeric_limits<double>::infinity()", "boundary_weight": "1.0"}),
+    "o3d_trianglemesh_filter_smooth_simple": (None, {"number_of_iterations": "1", "filter_scope": "FilterScope::All"}),
+    "o3d_trianglemesh_filter_smooth_laplacian": (None, {"number_of_iterations": "1", "lambda_filter": "0.5",
+                                                        "filter_scope": "FilterScope::All"}),
+    "o3d_trianglemesh_filter_smooth_taubin": (None, {"number_of_iterations": "1", "lambda_filter": "0.5", "mu": "-0.53",
+                                                     "filter_scope": "FilterScope::All"}),
+    "o3d_trianglemesh_subdivide_midpoint": (None, {"number_of_iterations": "1"}),
+    "o3d_trianglemesh_subdivide_loop": (None, {"number_of_iterations": "1"}),
+    "o3d_trianglemesh_crop_aabb": ("crop", {}),
+    "o3d_trianglemesh_create_box": (None, {"width": "1.0", "height": "1.0", "depth": "1.0"}),
+    "o3d_trianglemesh_create_sphere": (None, {"radius": "1.0", "resolution": "20"}),
+    "o3d_trianglemesh_create_cylinder": (None, {"radius": "1.0", "height": "2.0", "resolution": "20", "split": "4"}),
+    "o3d_trianglemesh_create_cone": (None, {"radius": "1.0", "height": "2.0", "resolution": "20", "split": "1"}),
+    "o3d_trianglemesh_create_torus": (None, {"torus_radius": "1.0", "tube_radius": "0.5", "radial_resolution": "30",
+                                             "tubular_resolution": "20"}),
+    "o3d_trianglemesh_create_arrow": (None, {"cylinder_radius": "1.0", "cone_radius": "1.5", "cylinder_height": "5.0",
+                                             "cone_height": "4.0", "resolution": "20", "cylinder_split": "4",
+                                             "cone_split": "1"}),
+    "o3d_trianglemesh_create_coordinate_frame": (None, {"size": "1.0"}),
+    **{f"o3d_trianglemesh_create_{c}": (None, {"radius": "1.0"}) for c in ("tetrahedron", "octahedron", "icosahedron")},
+    **{f"o3d_lineset_{c}": (None, {}) for c in (
+        "num_points", "num_lines", "paint_uniform_color", "transform", "create_from_axis_aligned_bounding_box",
+        "create_from_triangle_mesh")},
+    **{f"o3d_image_{c}": (None, {}) for c in (
+        "width", "height", "num_channels", "bytes_per_channel", "filter", "downsample", "flip_vertical",
+        "flip_horizontal")},
+    "o3d_image_create_float_image": (None, {"convert_type": "ImageConvert::Weighted"}),
+    "o3d_image_convert_depth_to_float": (None, {"depth_scale": "1000.0", "depth_trunc": "3.0"}),
+    **{f"o3d_voxelgrid_{c}": (None, {}) for c in (
+        "create_from_point_cloud", "create_from_point_cloud_within_bounds", "create_from_triangle_mesh", "num_voxels",
+        "get_voxel")},
+    "o3d_voxelgrid_get_voxel_size": ("voxel_size", {}), "o3d_voxelgrid_get_origin": ("origin", {}),
 }
-# handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run)
+# handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
+# the headers the base needs)
 CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/visualization.hpp"]),
-               "o3d_offscreen_renderer_t": ("OffscreenRenderer", "visualization", "done", ["o3dpp/span.hpp"])}
+               "o3d_offscreen_renderer_t": ("OffscreenRenderer", "visualization", "done", ["o3dpp/span.hpp"]),
+               "o3d_pointcloud_t": ("PointCloud", "pointcloud", "done", ["o3dpp/span.hpp"]),
+               "o3d_trianglemesh_t": ("TriangleMesh", "trianglemesh", "done", [
+                   "<limits>", "o3dpp/image.hpp", "o3dpp/pointcloud.hpp", "o3dpp/span.hpp"]),
+               "o3d_lineset_t": ("LineSet", "lineset", "done", ["o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
+               "o3d_image_t": ("Image", "image", "done", []),
+               "o3d_voxelgrid_t": ("VoxelGrid", "voxelgrid", "done", [
+                   "o3dpp/pointcloud.hpp", "o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"])}
 # C function -> Rust method name (None: the derived one).
 RUST_METHODS = {
     "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,
@@ -142,16 +220,123 @@ RUST_METHODS = {
         "compute_vertex_normals", "compute_triangle_normals", "normalize_normals", "paint_uniform_color",
         "remove_duplicated_vertices", "remove_duplicated_triangles", "remove_degenerate_triangles",
         "remove_unreferenced_vertices", "remove_non_manifold_edges", "merge_close_vertices", "translate")},
+    **{f"o3d_trianglemesh_{n}": None for n in (
+        "clear", "append", "clear_textures", "add_texture", "num_vertices", "num_triangles", "texture_count",
+        "transform", "rotate", "scale", "get_min_bound", "get_max_bound", "get_center", "get_surface_area",
+        "get_volume", "is_watertight", "is_edge_manifold", "is_vertex_manifold", "is_self_intersecting",
+        "is_orientable", "euler_poincare_characteristic", "sample_points_uniformly", "sample_points_poisson_disk",
+        "simplify_vertex_clustering", "simplify_quadric_decimation", "crop_aabb", "create_box",
+        "create_coordinate_frame", "create_tetrahedron", "create_octahedron", "create_icosahedron")},
+    "o3d_trianglemesh_get_texture": "texture",
     **{f"o3d_pointcloud_{n}": None for n in (
-        "translate", "paint_uniform_color", "remove_non_finite_points", "normalize_normals")},
+        "clear", "append", "transform", "rotate", "scale", "get_min_bound", "get_max_bound", "get_center",
+        "translate", "paint_uniform_color", "remove_non_finite_points", "normalize_normals", "voxel_down_sample",
+        "uniform_down_sample", "random_down_sample", "farthest_point_down_sample", "crop_aabb")},
+    "o3d_pointcloud_size": "try_len",
+    **{f"o3d_lineset_{n}": None for n in (
+        "num_points", "num_lines", "paint_uniform_color", "transform", "create_from_axis_aligned_bounding_box",
+        "create_from_triangle_mesh")},
+    **{f"o3d_image_{n}": None for n in (
+        "width", "height", "num_channels", "bytes_per_channel", "filter", "downsample", "flip_vertical",
+        "flip_horizontal", "create_float_image", "convert_depth_to_float")},
+    **{f"o3d_voxelgrid_{n}": None for n in (
+        "create_from_point_cloud", "create_from_point_cloud_within_bounds", "create_from_triangle_mesh", "num_voxels",
+        "get_voxel")},
+    "o3d_voxelgrid_get_voxel_size": "voxel_size", "o3d_voxelgrid_get_origin": "origin",
+    "o3d_camera_trajectory_size": "len", "o3d_camera_trajectory_clear": None, "o3d_kdtree_size": "len",
+    "o3d_kdtree_dimension": None, "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
 }
+# A handle -> the crate function that owns a new one a C call wrote (made by `handle!`).
+RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglemesh_t": "crate::trianglemesh::new_mesh",
+              "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
+              "o3d_voxelgrid_t": "crate::voxelgrid::new_grid"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
 RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False),
                 "o3d_offscreen_renderer_t": ("OffscreenRenderer", "&mut self", "self.raw_mut()", False),
                 "o3d_trianglemesh_t": ("TriangleMesh", "&mut self", "self.raw_mut()", True),
-                "o3d_pointcloud_t": ("PointCloud", "&mut self", "self.raw_mut()", True)}
+                "o3d_pointcloud_t": ("PointCloud", "&mut self", "self.raw_mut()", True),
+                "o3d_lineset_t": ("LineSet", "&mut self", "self.raw_mut()", True),
+                "o3d_image_t": ("Image", "&mut self", "self.raw_mut()", True),
+                "o3d_voxelgrid_t": ("VoxelGrid", "&self", "self.as_raw()", False),
+                "o3d_camera_trajectory_t": ("CameraTrajectory", "&mut self", "self.raw_mut()", True),
+                "o3d_octree_t": ("Octree", "&mut self", "self.raw_mut()", True),
+                "o3d_kdtree_t": ("KDTreeFlann", "&self", "self.as_raw()", False)}
+
+# Python: C function -> (Python class, name (None: the derived one), {C parameter: "keyword=default"}); a keyword
+# left out is the C name; a default is written in Python (True, None, 0.5, inf, (0.0, 0.0, 1.0)) or as a constant.
+PY_SPATIAL = {"transform": ("transform", {"transform": "transformation"}),
+           "translate": ("translate", {"relative": "=True"}), "rotate": ("rotate", {"rotation": "R", "center": "=None"}),
+           "scale": ("scale", {"center": "=None"}), "get_min_bound": (None, {}), "get_max_bound": (None, {}),
+           "get_center": (None, {})}
+PY_NORMALS = {"normalized": "=True"}
+PY_ITERATIONS = {"number_of_iterations": "=1", "filter_scope": "=O3D_FILTER_SCOPE_ALL"}
+PY_METHODS = {
+    **{f"o3d_pointcloud_{c}": ("PointCloud", *v) for c, v in PY_SPATIAL.items()},
+    **{f"o3d_trianglemesh_{c}": ("TriangleMesh", *v) for c, v in PY_SPATIAL.items()},
+    "o3d_pointcloud_clear": ("PointCloud", None, {}),
+    "o3d_pointcloud_paint_uniform_color": ("PointCloud", None, {"rgb": "color"}),
+    "o3d_pointcloud_remove_non_finite_points": ("PointCloud", None, {"remove_nan": "=True", "remove_infinite": "=True"}),
+    "o3d_pointcloud_normalize_normals": ("PointCloud", None, {}),
+    "o3d_pointcloud_voxel_down_sample": ("PointCloud", None, {}),
+    "o3d_pointcloud_uniform_down_sample": ("PointCloud", None, {}),
+    "o3d_pointcloud_random_down_sample": ("PointCloud", None, {"seed": "=None"}),
+    "o3d_pointcloud_farthest_point_down_sample": ("PointCloud", None, {"start_index": "=0"}),
+    "o3d_pointcloud_orient_normals_to_align_with_direction": ("PointCloud", None,
+                                                              {"direction": "orientation_reference=(0.0, 0.0, 1.0)"}),
+    "o3d_pointcloud_orient_normals_towards_camera_location": ("PointCloud", None, {"camera_location": "=(0.0, 0.0, 0.0)"}),
+    "o3d_trianglemesh_clear": ("TriangleMesh", None, {}),
+    "o3d_trianglemesh_compute_vertex_normals": ("TriangleMesh", None, PY_NORMALS),
+    "o3d_trianglemesh_compute_triangle_normals": ("TriangleMesh", None, PY_NORMALS),
+    "o3d_trianglemesh_normalize_normals": ("TriangleMesh", None, {}),
+    "o3d_trianglemesh_paint_uniform_color": ("TriangleMesh", None, {"rgb": "color"}),
+    **{f"o3d_trianglemesh_{c}": ("TriangleMesh", None, {}) for c in (
+        "remove_duplicated_vertices", "remove_duplicated_triangles", "remove_degenerate_triangles",
+        "remove_unreferenced_vertices", "remove_non_manifold_edges", "merge_close_vertices", "get_surface_area",
+        "get_volume", "is_watertight", "is_vertex_manifold", "is_self_intersecting", "is_orientable",
+        "euler_poincare_characteristic", "subdivide_midpoint", "subdivide_loop")},
+    "o3d_trianglemesh_is_edge_manifold": ("TriangleMesh", None, {"allow_boundary_edges": "=True"}),
+    "o3d_trianglemesh_sample_points_uniformly": ("TriangleMesh", None, {"number_of_points": "=100", "seed": "=None",
+                                                                        "use_triangle_normal": "=False"}),
+    "o3d_trianglemesh_simplify_vertex_clustering": ("TriangleMesh", None, {"contraction": "=O3D_SIMPLIFICATION_AVERAGE"}),
+    "o3d_trianglemesh_simplify_quadric_decimation": ("TriangleMesh", None, {"maximum_error": "=inf",
+                                                                            "boundary_weight": "=1.0"}),
+    "o3d_trianglemesh_filter_smooth_simple": ("TriangleMesh", None, PY_ITERATIONS),
+    "o3d_trianglemesh_filter_smooth_laplacian": ("TriangleMesh", None, {**PY_ITERATIONS, "lambda_filter": "=0.5"}),
+    "o3d_trianglemesh_filter_smooth_taubin": ("TriangleMesh", None, {**PY_ITERATIONS, "lambda_filter": "=0.5",
+                                                                     "mu": "=-0.53"}),
+    "o3d_trianglemesh_create_torus": ("TriangleMesh", None, {"torus_radius": "=1.0", "tube_radius": "=0.5",
+                                                             "radial_resolution": "=30", "tubular_resolution": "=20"}),
+    "o3d_trianglemesh_create_arrow": ("TriangleMesh", None, {
+        "cylinder_radius": "=1.0", "cone_radius": "=1.5", "cylinder_height": "=5.0", "cone_height": "=4.0",
+        "resolution": "=20", "cylinder_split": "=4", "cone_split": "=1"}),
+    "o3d_trianglemesh_create_coordinate_frame": ("TriangleMesh", None, {"size": "=1.0", "origin": "=(0.0, 0.0, 0.0)"}),
+    "o3d_lineset_paint_uniform_color": ("LineSet", None, {"rgb": "color"}),
+    "o3d_lineset_transform": ("LineSet", None, {"transform": "transformation"}),
+    "o3d_offscreen_renderer_setup_camera_fov": ("OffscreenRenderer", "setup_camera", {
+        "vertical_fov_deg": "vertical_field_of_view"}),
+    "o3d_offscreen_renderer_setup_camera_lookat": ("OffscreenRenderer", None, {"zoom": "=0.7"}),
+    "o3d_offscreen_renderer_render_to_png": ("OffscreenRenderer", None, {"path": "filename"}),
+    "o3d_offscreen_renderer_has_geometry": ("Open3DScene", None, {}),
+    "o3d_offscreen_renderer_remove_geometry": ("Open3DScene", None, {}),
+    "o3d_offscreen_renderer_clear_geometries": ("Open3DScene", "clear_geometry", {}),
+}
+# Python class -> (handle, whether a method that changes the object returns it, as Open3D's geometries do).
+PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_trianglemesh_t", True),
+              "LineSet": ("o3d_lineset_t", True), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
+              "Open3DScene": ("o3d_offscreen_renderer_t", False)}
+PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh"}  # the extension's classes
+# Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
+# changing methods that return None in Open3D.
+PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",
+               "o3d_trianglemesh_clear", "o3d_trianglemesh_compute_vertex_normals",
+               "o3d_trianglemesh_compute_triangle_normals", "o3d_trianglemesh_paint_uniform_color",
+               "o3d_trianglemesh_remove_duplicated_vertices", "o3d_trianglemesh_remove_duplicated_triangles",
+               "o3d_trianglemesh_remove_degenerate_triangles", "o3d_trianglemesh_remove_unreferenced_vertices",
+               "o3d_trianglemesh_remove_non_manifold_edges", "o3d_trianglemesh_merge_close_vertices",
+               "o3d_lineset_paint_uniform_color"}
+PY_VOID = {"o3d_pointcloud_orient_normals_to_align_with_direction", "o3d_pointcloud_orient_normals_towards_camera_location"}
 
 
 def camel(snake):
@@ -341,44 +526,94 @@ def gen_cpp_options(structs, groups):
     return "\n".join(out)
 
 
+CPP_ARRAYS = {3: "Vec3", 9: "Mat3", 16: "Mat4"}
+
+
+def cpp_array(p):
+    """The C++ type of an array output: Vec3 and its kin for doubles, std::array<int32_t, N> for ints."""
+    return CPP_ARRAYS[p["array"]] if p["type"] == "double*" else f"std::array<int32_t, {p['array']}>"
+
+
+def cpp_param(p, groups, handle):
+    """(C++ parameter type or None when the binding passes a fixed value, the C argument)."""
+    k, n = p["kind"], p["name"]
+    if k == "enum":
+        return cpp_enum_name(groups[p["typedef"]]), f"static_cast<int32_t>({n})"
+    if k == "handle":  # the class itself is Self (still incomplete where the base is defined)
+        other = binding_methods.handle_type(p)
+        return f"const {'Self' if other == handle else type_name(other, HANDLE_TYPES)}&", f"{n}.get()"
+    if k in ("array", "optional_array"):
+        return f"const {CPP_ARRAYS[p['array']]}&", f"{n}.data()"
+    return {"int32_t": ("int", n), "double": ("double", n), "bool": ("bool", f"{n} ? 1 : 0"), "size": ("std::size_t", n),
+            "seed": ("uint64_t", n), "string": ("const std::string&", f"{n}.c_str()"),
+            "path": ("const std::string&", f"{n}.c_str()"), "fixed": (None, binding_methods.FIXED.get(n))}[k]
+
+
+def gen_cpp_method(m, handle, name, defaults, checked, groups):
+    """The C++ of one method; trailing optional arrays give an overload without them (the C call gets NULL)."""
+    params, args = [], []
+    for p in m.params:
+        ty, arg = cpp_param(p, groups, handle)
+        if ty:
+            params.append((f"{ty} {p['name']}", defaults.get(p["name"])))
+        args.append(arg)
+    n_optional = next((i for i, p in enumerate(reversed(m.params)) if p["kind"] != "optional_array"), len(m.params))
+    overloads = [(params, args)] + [(params[:len(params) - i], args[:len(args) - i] + ["nullptr"] * i)
+                                    for i in range(1, n_optional + 1)]
+    out = [f"    /// @brief {m.brief}"]
+    for sig_params, call_args in reversed(overloads):
+        out += cpp_method_body(m, handle, name or m.default_name(handle), cpp_signature(sig_params), call_args, checked)
+    return out
+
+
+def cpp_signature(params):
+    """The parameter list; a default before a parameter without one is dropped (the shorter overload has it)."""
+    out, required = [], False
+    for decl, default in reversed(params):
+        required = required or default is None
+        out.insert(0, decl if required else f"{decl} = {default}")
+    return ", ".join(out)
+
+
+def cpp_method_body(m, handle, name, sig, args, checked):
+    const = " const" if m.const else ""
+    if m.new:  # a new object: Owner::adopt of its class runs the C call and owns what it wrote
+        cls = "Self" if m.new == handle else type_name(m.new, HANDLE_TYPES)
+        call = f"{m.c}(" + ", ".join(["out"] + ([] if m.static else ["self().get()"]) + args) + ")"
+        return [f"    {'static ' if m.static else ''}{cls} {name}({sig}){const} {{",
+                f"        return {cls}::adopt([&](auto** out) {{ return {call}; }});", "    }"]
+    check = "check" if m.const else f"self().{checked}"
+    if m.out is None:
+        call = f"{m.c}(" + ", ".join(["self().get()"] + args) + ")"
+        return [f"    Self& {name}({sig}){const} {{", f"        return {check}({call});", "    }"]
+    array = cpp_array(m.out) if m.out_kind == "array" else None
+    ret, init, value = {"bool": ("bool", "int32_t out = 0;", "out != 0"), "int": ("int", "int32_t out = 0;", "out"),
+                        "int64": ("int64_t", "int64_t out = 0;", "out"), "size": ("std::size_t", "size_t out = 0;", "out"),
+                        "double": ("double", "double out = 0;", "out"), "array": (array, f"{array} out{{}};", "out")
+                        }[m.out_kind]
+    call = f"{m.c}(" + ", ".join(["out.data()" if m.out_kind == "array" else "&out", "self().get()"] + args) + ")"
+    return [f"    {ret} {name}({sig}){const} {{", f"        {init}", f"        {check}({call});", f"        return {value};",
+            "    }"]
+
+
 def gen_cpp_methods(model, groups, handle):
     """generated/<header>.hpp: detail::<Class>Calls<Self>, the base that gives the class its pass-through methods
     (the class befriends it: the calls check their status with the class's own `done` or `ran`)."""
     cls, stem, checked, includes = CPP_CLASSES[handle]
     out = [f"// {HEADER}", "#pragma once", f"/// @file generated/{stem}.hpp",
            f"/// @brief The pass-through methods of o3dpp::{cls} ({handle}), from their C declarations.",
-           "#include <cstdint>", "#include <string>", "", '#include "o3d/o3d.h"', '#include "o3dpp/generated/enums.hpp"']
-    out += [f'#include "{h}"' for h in includes] + ["", "namespace o3dpp {", "namespace detail {", "",
+           "#include <cstddef>", "#include <cstdint>"] + [f"#include {h}" for h in includes if h.startswith("<")]
+    out += ["#include <string>", "", '#include "o3d/o3d.h"', '#include "o3dpp/error.hpp"',
+            '#include "o3dpp/generated/enums.hpp"']
+    out += [f'#include "{h}"' for h in includes if not h.startswith("<")]
+    out += ["", "namespace o3dpp {", "namespace detail {", "",
             f"/// @brief The methods of {cls} that pass their arguments to one C function.", "template <typename Self>",
             f"class {cls}Calls {{", "public:"]
     for m in binding_methods.methods(model, groups, handle, CPP_METHODS):
         name, defaults = CPP_METHODS[m.c]
-        params, args = [], []
-        for p in m.params:
-            k, n = p["kind"], p["name"]
-            ty, arg = {"int32_t": ("int", n), "double": ("double", n), "bool": ("bool", f"{n} ? 1 : 0"),
-                       "string": ("const std::string&", f"{n}.c_str()"), "path": ("const std::string&", f"{n}.c_str()"),
-                       "array": ({3: "Vec3", 16: "Mat4"}.get(p["array"]) and f"const {({3: 'Vec3', 16: 'Mat4'}[p['array']])}&",
-                                 f"{n}.data()"),
-                       "fixed": (None, binding_methods.FIXED.get(n)),
-                       "enum": (cpp_enum_name(groups.get(p.get("typedef"))) if k == "enum" else None,
-                                f"static_cast<int32_t>({n})"),
-                       "handle": (f"const {type_name(binding_methods.handle_type(p), HANDLE_TYPES)}&", f"{n}.get()")}[k]
-            if ty:
-                params.append(f"{ty} {n}" + (f" = {defaults[n]}" if n in defaults else ""))
-            args.append(arg)
-        call = f"{m.c}(" + ", ".join((["&out"] if m.out else []) + ["self().get()"] + args) + ")"
-        sig = ", ".join(params)
-        out.append(f"    /// @brief {m.brief}")
-        if m.out is None:
-            out += [f"    Self& {name or m.default_name(handle)}({sig}) {{", f"        return self().{checked}({call});",
-                    "    }"]
-        else:
-            ret, init, value = {"bool": ("bool", "int32_t out = 0;", "out != 0"), "int": ("int", "int32_t out = 0;", "out"),
-                                "double": ("double", "double out = 0;", "out")}[m.out_kind]
-            out += [f"    {ret} {name or m.default_name(handle)}({sig}) {{", f"        {init}",
-                    f"        self().{checked}({call});", f"        return {value};", "    }"]
-    out += ["", "private:", "    Self& self() { return static_cast<Self&>(*this); }", "};", "",
+        out += gen_cpp_method(m, handle, name, defaults, checked, groups)
+    out += ["", "private:", "    Self& self() { return static_cast<Self&>(*this); }",
+            "    const Self& self() const { return static_cast<const Self&>(*this); }", "};", "",
             "}  // namespace detail", "}  // namespace o3dpp", ""]
     return "\n".join(out)
 
@@ -437,6 +672,148 @@ def gen_python(structs, groups):
         out += ["    }", "};"]
     out += ["", "}  // namespace o3dpy", ""]
     return "\n".join(out)
+
+
+def py_class_stem(cls):
+    """PointCloud -> point_cloud, Open3DScene -> open3d_scene."""
+    return re.sub(r"(?<!^)(?=[A-Z][a-z])", "_", cls).lower()
+
+
+def py_default(text, p, groups):
+    """A default written in Python (True, None, 0.7, (0.0, 0.0, 1.0), inf) or as a C constant, in C++."""
+    if text in ("True", "False"):
+        return text.lower()
+    if text == "None":
+        return "py::none()"
+    if text == "inf":
+        return "std::numeric_limits<double>::infinity()"
+    if text.startswith("("):
+        return f"py::make_tuple{text}"
+    if text.startswith("O3D_"):
+        g = groups[p["typedef"]]
+        const = next(c for c in g.constants if c["name"] == text)
+        return f"{py_enum_types(g)[0][0]}::{g.variant(const, PY_VARIANTS)}"
+    return text
+
+
+PY_AS = {3: "as_vec3", 9: "as_mat3", 16: "as_mat4"}
+
+
+def py_param(p, kw, groups):
+    """(C++ lambda parameter, the conversion run with the GIL held before the call or None, the C argument)."""
+    k, n, v = p["kind"], p["name"], p["name"] + "_"
+    if k == "enum":
+        return f"{py_enum_types(groups[p['typedef']])[0][0]} {n}", None, f"(int32_t){n}"
+    if k == "array":
+        return f"py::handle {n}", f'const auto {v} = {PY_AS[p["array"]]}({n}, "{kw}");', f"{v}.data()"
+    if k == "optional_array":
+        return (f"py::handle {n}", f"std::optional<std::array<double, {p['array']}>> {v};\n"
+                f'            if (!{n}.is_none()) {v} = {PY_AS[p["array"]]}({n}, "{kw}");', f"{v} ? {v}->data() : nullptr")
+    if k in ("handle", "fixed"):  # another object's lock, a frame drawn first: the Python files write those by hand
+        raise ValueError(f"{p['name']}: a {k} parameter is not generated for Python")
+    return {"int32_t": (f"int64_t {n}", f'const int32_t {v} = int32_of({n}, "{kw}");', v),
+            "double": (f"double {n}", None, n), "bool": (f"bool {n}", None, f"{n} ? 1 : 0"),
+            "size": (f"int64_t {n}", f'const size_t {v} = non_negative({n}, "{kw}");', v),
+            "seed": (f"py::handle {n}", f"const uint64_t {v} = seed_or_random({n});", v),
+            "string": (f"const std::string& {n}", None, f"{n}.c_str()"),
+            "path": (f"py::handle {n}", f"const std::string {v} = path_of({n});", f"{v}.c_str()")}[k]
+
+
+def py_method_doc(m, keywords, returns_self):
+    """The C brief with the Python keywords, None for NULL, and "Returns self." for chaining methods."""
+    text = re.sub(r"\bNULL\b", "None", m.brief)
+    for c, kw in keywords.items():
+        text = text.replace(f"`{c}`", f"`{kw}`")
+    return sentence(py_doc(text)) + (" Returns self." if returns_self else "")
+
+
+def gen_py_method(m, cls, groups):
+    """One `cls.def(...)`: convert the arguments (GIL held), run the C call under the handle's lock with the GIL
+    released (a static function: just without the GIL), check its status, return the value, new object or self."""
+    handle, chains = PY_CLASSES[cls]
+    _, name, spec = PY_METHODS[m.c]
+    keywords, defaults = {}, {}
+    for c, text in spec.items():
+        kw, _, default = text.partition("=")
+        keywords[c] = kw or c
+        if default:
+            defaults[c] = default
+    lambda_params, pre, args, py_args = [], [], [], []
+    path = None
+    for p in m.params:
+        kw = keywords.get(p["name"], p["name"])
+        lp, conversion, arg = py_param(p, kw, groups)
+        lambda_params.append(lp)
+        if conversion:
+            pre.append(conversion)
+        if p["kind"] == "path":
+            path = p["name"] + "_"
+        args.append(arg)
+        default = f" = {py_default(defaults[p['name']], p, groups)}" if p["name"] in defaults else ""
+        py_args.append(f'py::arg("{kw}"){default}')
+    returns_self = chains and not m.static and not m.const and m.out is None and not m.new and m.c not in PY_VOID
+    body = list(pre)
+    outs = []
+    if m.new:
+        body.append(f"{m.new}* out = nullptr;")
+        outs = ["&out"]
+    elif m.out is not None:
+        body.append({"array": f"std::array<double, {m.out['array']}> out{{}};", "double": "double out = 0;",
+                     "int64": "int64_t out = 0;", "size": "size_t out = 0;"}.get(m.out_kind, "int32_t out = 0;"))
+        outs = ["out.data()" if m.out_kind == "array" else "&out"]
+    filename = f", {path}" if path else ""
+    if m.static:
+        call = f"{m.c}(" + ", ".join(outs + args) + ")"
+        body.append(f"check(nogil([&] {{ return {call}; }}){filename});")
+    else:
+        call = f"{m.c}(" + ", ".join(outs + ["c_"] + args) + ")"
+        if m.const:
+            lambda_params.insert(0, "const Self& self")
+            body.append(f"locked_const(self.h, [&](const {handle}* c_) {{ return {call}; }}{filename});")
+        else:
+            lambda_params.insert(0, "py::object self_" if returns_self else "Self& self")
+            if returns_self:
+                body.insert(0, "Self& self = self_.cast<Self&>();")
+            target = "self.for_resize()" if m.c in PY_RESIZING else "self.h"
+            body.append(f"locked_mut({target}, [&]({handle}* c_) {{ return {call}; }}{filename});")
+    if m.new:
+        body.append(f"return {PY_TYPES[m.new]}(out);")
+    elif m.out is not None:
+        body.append({"bool": "return out != 0;", "array": "return vec3_to_array(out.data());" if m.out["array"] == 3
+                     else f"return mat_to_array(out.data(), {m.out['array']}, 0);"}.get(m.out_kind, "return out;"))
+    elif returns_self:
+        body.append("return self_;")
+    doc = c_string(py_method_doc(m, keywords, returns_self))
+    return [f"    cls.{'def_static' if m.static else 'def'}(", f'        "{name or m.default_name(handle)}",',
+            f"        []({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + \
+        ["        },", "        " + ", ".join(py_args + [doc]) + ");"]
+
+
+def gen_python_methods(model, groups, stem, classes):
+    """generated/<header>_methods.h: def_<class>_methods(cls) per Python class, defining its pass-through methods."""
+    out = [f"// {HEADER}", f"// The methods of {', '.join(classes)} that pass their arguments to one C function, from",
+           "// capi/include/o3d/*.h: def_<class>_methods(cls) defines them on the class (whose `h` is its locked handle).",
+           "#pragma once", "", "#include <array>", "#include <limits>", "#include <optional>", "",
+           '#include "../geometry_types.h"', "", "namespace o3dpy {"]
+    for cls in classes:
+        handle = PY_CLASSES[cls][0]
+        wanted = {c for c, spec in PY_METHODS.items() if spec[0] == cls}
+        out += ["", f"/// The pass-through methods of {cls} ({handle}).", "template <typename Self>",
+                f"void def_{py_class_stem(cls)}_methods(py::class_<Self>& cls) {{"]
+        for m in binding_methods.methods(model, groups, handle, wanted):
+            out += gen_py_method(m, cls, groups)
+        out.append("}")
+    out += ["", "}  // namespace o3dpy", ""]
+    return "\n".join(out)
+
+
+def py_method_files(model, groups):
+    by_header = {}
+    for cls in PY_CLASSES:
+        header = next(f["header"] for f in model["functions"] if PY_METHODS.get(f["name"], ("",))[0] == cls)
+        by_header.setdefault(header[:-2], []).append(cls)
+    return {PY_DIR / f"{stem}_methods.h": gen_python_methods(model, groups, stem, classes)
+            for stem, classes in by_header.items()}
 
 
 # ---- Rust ---------------------------------------------------------------------------------------------------
@@ -510,6 +887,25 @@ def gen_rust_options(s, groups):
     return out + ["    }", "}"]
 
 
+def rust_param(p, groups):
+    """(Rust parameter type or None when the binding passes a fixed value, the C argument)."""
+    k, n = p["kind"], p["name"]
+    if k == "enum":
+        return rust_enum_name(groups[p["typedef"]]), f"{n}.raw()"
+    if k == "handle":
+        return f"&{type_name(binding_methods.handle_type(p), HANDLE_TYPES)}", f"{n}.as_raw()"
+    if k == "array":
+        shape = binding_methods.matrix(p)
+        if shape:
+            return f"&[[f64; {shape[1]}]; {shape[0]}]", f"{n}.as_ptr().cast()"
+        return f"[f64; {p['array']}]", f"{n}.as_ptr()"
+    if k == "optional_array":
+        return f"Option<[f64; {p['array']}]>", f"crate::util::opt_ptr(&{n})"
+    return {"int32_t": ("i32", n), "double": ("f64", n), "bool": ("bool", f"i32::from({n})"), "size": ("usize", n),
+            "seed": ("u64", n), "string": ("&str", f'c_string("{n}", {n})?.as_ptr()'),
+            "path": ("impl AsRef<Path>", f"c_path({n}.as_ref())?.as_ptr()"), "fixed": (None, binding_methods.FIXED.get(n))}[k]
+
+
 def gen_rust_methods(model, groups, handle):
     """An `impl` block of the handle's type with its pass-through methods."""
     ty, receiver, raw, chain = RUST_CLASSES[handle]
@@ -517,22 +913,29 @@ def gen_rust_methods(model, groups, handle):
     for m in binding_methods.methods(model, groups, handle, RUST_METHODS):
         params, args = [], []
         for p in m.params:
-            k, n = p["kind"], p["name"]
-            pty, arg = {"int32_t": ("i32", n), "double": ("f64", n), "bool": ("bool", f"i32::from({n})"),
-                        "string": ("&str", f'c_string("{n}", {n})?.as_ptr()'),
-                        "path": ("impl AsRef<Path>", f"c_path({n}.as_ref())?.as_ptr()"),
-                        "array": (f"[f64; {p['array']}]", f"{n}.as_ptr()"),
-                        "fixed": (None, binding_methods.FIXED.get(n)),
-                        "enum": (rust_enum_name(groups.get(p.get("typedef"))) if k == "enum" else None, f"{n}.raw()"),
-                        "handle": (f"&{type_name(binding_methods.handle_type(p), HANDLE_TYPES)}", f"{n}.as_raw()")}[k]
+            pty, arg = rust_param(p, groups)
             if pty:
-                params.append(f"{n}: {pty}")
+                params.append(f"{p['name']}: {pty}")
             args.append(arg)
         name = RUST_METHODS[m.c] or m.default_name(handle)
-        call = f"sys::{m.c}(" + ", ".join((["&mut out"] if m.out else []) + [raw] + args) + ")"
-        ret, init, value = {None: ("&mut Self", None, None) if chain else ("()", None, None), "bool": ("bool", "0", "out != 0"), "int": ("i32", "0", "out"),
-                            "double": ("f64", "0.0", "out")}[m.out_kind]
-        out += [f"    /// {rust_doc(m.brief)}", f"    pub fn {name}({receiver}{''.join(', ' + p for p in params)}) -> Result<{ret}> {{"]
+        recv, me = ([], []) if m.static else (["&self"], ["self.as_raw()"]) if m.const else ([receiver], [raw])
+        sig = ", ".join(recv + params)
+        out.append(f"    /// {rust_doc(re.sub(r'NULL', 'None', m.brief))}")
+        if m.new:  # a new object, owned through its type's adopting constructor
+            new_ty = type_name(m.new, HANDLE_TYPES)
+            call = f"sys::{m.c}(" + ", ".join(["out"] + me + args) + ")"
+            out += [f"    pub fn {name}({sig}) -> Result<{new_ty}> {{",
+                    "        // SAFETY: a valid handle; pointers to values that live for the call.",
+                    f"        {RUST_ADOPT[m.new]}(|out| unsafe {{ {call} }})", "    }"]
+            continue
+        elem, zero = ("f64", "0.0") if m.out and m.out["type"] == "double*" else ("i32", "0")
+        n = m.out and m.out["array"]
+        ret, init, value = {None: ("&mut Self", None, None) if chain else ("()", None, None), "bool": ("bool", "0", "out != 0"),
+                            "int": ("i32", "0", "out"), "int64": ("i64", "0", "out"), "size": ("usize", "0", "out"),
+                            "double": ("f64", "0.0", "out"), "array": (f"[{elem}; {n}]", f"[{zero}; {n}]", "out")}[m.out_kind]
+        outs = ["out.as_mut_ptr()" if m.out_kind == "array" else "&mut out"] if m.out else []
+        call = f"sys::{m.c}(" + ", ".join(outs + me + args) + ")"
+        out.append(f"    pub fn {name}({sig}) -> Result<{ret}> {{")
         if init:
             out.append(f"        let mut out = {init};")
         out += ["        // SAFETY: a valid handle; pointers to values that live for the call.",
@@ -556,7 +959,8 @@ def gen_rust(structs, groups, model=None):
     files = {}
     for module, blocks in modules.items():
         text = [f"// {HEADER}",
-                f"// The enums and options structs of src/{module}.rs (`include!`d there), from capi/include/o3d/*.h."]
+                f"// The enums, options structs and pass-through methods of src/{module}.rs (`include!`d there),",
+                "// from capi/include/o3d/*.h."]
         for b in blocks:
             text += [""] + b
         files[f"{module}.rs"] = "\n".join(text) + "\n"
@@ -577,6 +981,7 @@ def outputs(include_dir):
              PY_DIR / "tables.h": gen_python(py_structs, groups)}
     files.update({RUST_DIR / name: text for name, text in gen_rust(rust_structs, groups, model).items()})
     files.update({CPP_DIR / f"{stem}.hpp": gen_cpp_methods(model, groups, h) for h, (_, stem, _, _) in CPP_CLASSES.items()})
+    files.update(py_method_files(model, groups))
     return files
 
 

@@ -99,28 +99,28 @@ struct Handle {
     ~Handle() { Destroy(p); }
 };
 
-/// Run `f(const T*)` under a shared lock with the GIL released; raise on failure.
+/// Run `f(const T*)` under a shared lock with the GIL released; raise on failure (naming `filename`, if any).
 template <typename H, typename F>
-void locked_const(const std::shared_ptr<H>& h, F&& f) {
+void locked_const(const std::shared_ptr<H>& h, F&& f, const std::string& filename = std::string()) {
     o3d_status s;
     {
         py::gil_scoped_release release;
         std::shared_lock<std::shared_mutex> lock(h->mutex);
         s = f(static_cast<const std::remove_pointer_t<decltype(h->p)>*>(h->p));
     }
-    check(s);
+    check(s, filename);
 }
 
-/// Run `f(T*)` under an exclusive lock with the GIL released; raise on failure.
+/// Run `f(T*)` under an exclusive lock with the GIL released; raise on failure (naming `filename`, if any).
 template <typename H, typename F>
-void locked_mut(const std::shared_ptr<H>& h, F&& f) {
+void locked_mut(const std::shared_ptr<H>& h, F&& f, const std::string& filename = std::string()) {
     o3d_status s;
     {
         py::gil_scoped_release release;
         std::unique_lock<std::shared_mutex> lock(h->mutex);
         s = f(h->p);
     }
-    check(s);
+    check(s, filename);
 }
 
 /// The array family (o3d_<noun>_*_array) and clone of a geometry, by C handle type.
@@ -202,6 +202,11 @@ py::object keepalive(std::shared_ptr<void> p);
 inline int32_t int32_of(int64_t v, const char* what) {
     if (v < INT32_MIN || v > INT32_MAX) invalid(std::string(what) + " is out of range: " + std::to_string(v));
     return (int32_t)v;
+}
+/// A Python int as a C count (InvalidArgumentError naming `what` when negative).
+inline size_t non_negative(int64_t v, const char* what) {
+    if (v < 0) invalid(std::string(what) + " must be >= 0, got " + std::to_string(v));
+    return (size_t)v;
 }
 
 /// A numeric array-like as an ndarray (None, non-arrays and non-numbers raise InvalidArgumentError).

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <functional>
-#include <optional>
 
 #include "common.h"
 
@@ -90,58 +89,9 @@ std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle b
 py::object make_aabb(const double* lo, const double* hi);
 PyImage image_from_array(py::handle obj);
 
-/// transform, translate, rotate, scale and the bounds: the same functions for every geometry.
+/// get_axis_aligned_bounding_box over `aabb` (the other spatial methods are generated: generated/*_methods.h).
 template <typename G, typename T = typename G::C>
-void def_spatial(py::class_<G>& cls, o3d_status (*transform)(T*, const double*),
-                 o3d_status (*translate)(T*, const double*, int32_t), o3d_status (*rotate)(T*, const double*, const double*),
-                 o3d_status (*scale)(T*, double, const double*), o3d_status (*min_bound)(double*, const T*),
-                 o3d_status (*max_bound)(double*, const T*), o3d_status (*center)(double*, const T*),
-                 o3d_status (*aabb)(double*, double*, const T*)) {
-    auto optional_center = [](py::handle c) {
-        std::optional<std::array<double, 3>> out;
-        if (!c.is_none()) out = as_vec3(c, "center");
-        return out;
-    };
-    cls.def(
-           "transform",
-           [transform](py::object self, py::handle M) {
-               auto t = as_mat4(M, "transformation");
-               locked_mut(self.cast<G&>().h, [&](T* p) { return transform(p, t.data()); });
-               return self;
-           },
-           py::arg("transformation"), "Apply a 4x4 homogeneous transform (normals rotated). Returns self.")
-        .def(
-            "translate",
-            [translate](py::object self, py::handle t, bool relative) {
-                auto v = as_vec3(t, "translation");
-                locked_mut(self.cast<G&>().h, [&](T* p) { return translate(p, v.data(), relative ? 1 : 0); });
-                return self;
-            },
-            py::arg("translation"), py::arg("relative") = true,
-            "relative=True: add translation; False: move the center to it. Returns self.")
-        .def(
-            "rotate",
-            [rotate, optional_center](py::object self, py::handle R, py::handle c) {
-                auto r = as_mat3(R, "R");
-                auto oc = optional_center(c);
-                locked_mut(self.cast<G&>().h, [&](T* p) { return rotate(p, r.data(), oc ? oc->data() : nullptr); });
-                return self;
-            },
-            py::arg("R"), py::arg("center") = py::none(), "Rotate by the 3x3 matrix R about center (None: the center). Returns self.")
-        .def(
-            "scale",
-            [scale, optional_center](py::object self, double s, py::handle c) {
-                auto oc = optional_center(c);
-                locked_mut(self.cast<G&>().h, [&](T* p) { return scale(p, s, oc ? oc->data() : nullptr); });
-                return self;
-            },
-            py::arg("scale"), py::arg("center") = py::none(), "Scale about center (None: the center). Returns self.");
-    for (auto [name, fn] : {std::pair{"get_min_bound", min_bound}, {"get_max_bound", max_bound}, {"get_center", center}})
-        cls.def(name, [fn = fn](const G& self) {
-            std::array<double, 3> v{};
-            locked_const(self.h, [&](const T* p) { return fn(v.data(), p); });
-            return vec3_to_array(v.data());
-        });
+void def_aabb(py::class_<G>& cls, o3d_status (*aabb)(double*, double*, const T*)) {
     cls.def(
         "get_axis_aligned_bounding_box",
         [aabb](const G& self) {
@@ -151,10 +101,6 @@ void def_spatial(py::class_<G>& cls, o3d_status (*transform)(T*, const double*),
         },
         "The axis-aligned bounding box (o3d.geometry.AxisAlignedBoundingBox).");
 }
-#define O3DPY_DEF_SPATIAL(cls, noun)                                                                           \
-    def_spatial(cls, &o3d_##noun##_transform, &o3d_##noun##_translate, &o3d_##noun##_rotate, &o3d_##noun##_scale, \
-                &o3d_##noun##_get_min_bound, &o3d_##noun##_get_max_bound, &o3d_##noun##_get_center,             \
-                &o3d_##noun##_get_axis_aligned_bounding_box)
 
 /// o3d.geometry.LineSet; copy-on-write before resizing calls, as PyPointCloud.
 struct PyLineSet : Geom<o3d_lineset_t> {

@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "geometry_types.h"
+#include "generated/lineset_methods.h"
 
 namespace o3dpy {
 
@@ -84,23 +84,6 @@ void define_lineset(py::module_& m) {
              [](const PyLineSet& self) {
                  return "LineSet with " + std::to_string(count(self, &o3d_lineset_num_lines)) + " lines.";
              })
-        .def(
-            "paint_uniform_color",
-            [](py::object self, py::handle color) {
-                auto c = as_vec3(color, "color");
-                locked_mut(self.cast<PyLineSet&>().for_resize(),
-                           [&](o3d_lineset_t* ls) { return o3d_lineset_paint_uniform_color(ls, c.data()); });
-                return self;
-            },
-            py::arg("color"), "Set every line color. Returns self.")
-        .def(
-            "transform",
-            [](py::object self, py::handle T) {
-                auto t = as_mat4(T, "transformation");
-                locked_mut(self.cast<PyLineSet&>().h, [&](o3d_lineset_t* ls) { return o3d_lineset_transform(ls, t.data()); });
-                return self;
-            },
-            py::arg("transformation"), "Apply a 4x4 homogeneous transform to the points. Returns self.")
         .def_static(
             "create_from_point_cloud_correspondences",
             [](const PyPointCloud& cloud0, const PyPointCloud& cloud1, py::handle correspondences) {
@@ -145,6 +128,7 @@ void define_lineset(py::module_& m) {
     def_array(cls, "lines", O3D_LINESET_LINES, "(M, 2) int32 point indices (read-only view).", true);
     def_has(cls, "has_colors", O3D_LINESET_COLORS);
     def_array_access(cls);
+    def_line_set_methods(cls);
 }
 
 }  // namespace o3dpy

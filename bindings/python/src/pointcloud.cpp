@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // o3d.geometry.PointCloud over o3d_pointcloud_t (pointcloud.h).
 #include <limits>
-#include <random>
 
-#include "geometry_types.h"
+#include "generated/pointcloud_methods.h"
 
 namespace o3dpy {
 
@@ -101,13 +100,6 @@ void define_pointcloud(py::module_& m) {
             return "PointCloud with " + std::to_string(self.size()) + " points.";
         })
         .def(
-            "clear",
-            [](py::object self) {
-                locked_mut(cloud(self).for_resize(), [](o3d_pointcloud_t* pc) { return o3d_pointcloud_clear(pc); });
-                return self;
-            },
-            "Remove every point, normal and color. Returns self.")
-        .def(
             "__iadd__",
             [](py::object self, const PyPointCloud& other) {
                 CloudPtr src = other.h;
@@ -148,14 +140,6 @@ void define_pointcloud(py::module_& m) {
             },
             py::arg("cloud"))
         .def(
-            "paint_uniform_color",
-            [](py::object self, py::handle color) {
-                auto c = as_vec3(color, "color");
-                locked_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) { return o3d_pointcloud_paint_uniform_color(pc, c.data()); });
-                return self;
-            },
-            py::arg("color"), "Set every color to the RGB color (each in [0, 1]). Returns self.")
-        .def(
             "select_by_index",
             [](const PyPointCloud& self, py::handle indices, bool invert) {
                 std::vector<int32_t> idx = as_indices(indices);
@@ -166,68 +150,6 @@ void define_pointcloud(py::module_& m) {
             py::arg("indices"), py::arg("invert") = false,
             "New cloud with the points at indices (invert=True: all the others). Out-of-range indices raise ValueError.")
         .def(
-            "remove_non_finite_points",
-            [](py::object self, bool remove_nan, bool remove_infinite) {
-                locked_mut(cloud(self).for_resize(), [&](o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_remove_non_finite_points(pc, remove_nan ? 1 : 0, remove_infinite ? 1 : 0);
-                });
-                return self;
-            },
-            py::arg("remove_nan") = true, py::arg("remove_infinite") = true,
-            "Drop points with a NaN / infinite coordinate. Returns self.")
-        .def(
-            "normalize_normals",
-            [](py::object self) {
-                locked_mut(cloud(self).h, [](o3d_pointcloud_t* pc) { return o3d_pointcloud_normalize_normals(pc); });
-                return self;
-            },
-            "Scale every normal to unit length. Returns self.")
-        .def(
-            "voxel_down_sample",
-            [](const PyPointCloud& self, double voxel_size) {
-                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_voxel_down_sample(out, pc, voxel_size);
-                });
-            },
-            py::arg("voxel_size"), "Average the points (normals, colors) in each voxel of edge voxel_size > 0.")
-        .def(
-            "uniform_down_sample",
-            [](const PyPointCloud& self, int64_t every_k_points) {
-                if (every_k_points < 1) invalid("uniform_down_sample: every_k_points must be >= 1");
-                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_uniform_down_sample(out, pc, (size_t)every_k_points);
-                });
-            },
-            py::arg("every_k_points"), "Keep points 0, k, 2k, ...")
-        .def(
-            "random_down_sample",
-            [](const PyPointCloud& self, double sampling_ratio, py::object seed) {
-                uint64_t s;
-                if (seed.is_none()) {
-                    std::random_device rd;  // Open3D: a fresh random draw unless seeded
-                    s = ((uint64_t)rd() << 32) ^ rd();
-                } else {
-                    py::int_ i = seed;
-                    s = (uint64_t)PyLong_AsUnsignedLongLongMask(i.ptr());
-                }
-                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_random_down_sample(out, pc, sampling_ratio, s);
-                });
-            },
-            py::arg("sampling_ratio"), py::arg("seed") = py::none(),
-            "Keep round(sampling_ratio * N) random points in their original order. seed=None draws a new "
-            "seed each call (as Open3D); an integer seed gives the same output every time.")
-        .def(
-            "farthest_point_down_sample",
-            [](const PyPointCloud& self, int64_t num_samples, int64_t start_index) {
-                if (num_samples < 0) invalid("farthest_point_down_sample: num_samples must be >= 0");
-                if (start_index < 0) invalid("farthest_point_down_sample: start_index must be >= 0");
-                return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_farthest_point_down_sample(out, pc, (size_t)num_samples, (size_t)start_index);
-                });
-            },
-            py::arg("num_samples"), py::arg("start_index") = 0, "Farthest-point sampling.")
-        .def(
             "estimate_normals",
             [](py::object self, py::handle search_param, bool /*fast_normal_computation*/, int32_t num_threads) {
                 o3d_search_param_t p = to_search_param(search_param);
@@ -237,24 +159,6 @@ void define_pointcloud(py::module_& m) {
             py::arg("search_param") = py::none(), py::arg("fast_normal_computation") = true, py::arg("num_threads") = 0,
             "PCA normals over each point's neighbourhood (default KDTreeSearchParamKNN(30)). Existing normals "
             "orient the new ones. fast_normal_computation is accepted for Open3D compatibility.")
-        .def(
-            "orient_normals_to_align_with_direction",
-            [](py::object self, py::handle direction) {
-                auto d = as_vec3(direction, "orientation_reference");
-                locked_mut(cloud(self).h, [&](o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_orient_normals_to_align_with_direction(pc, d.data());
-                });
-            },
-            py::arg("orientation_reference") = py::make_tuple(0.0, 0.0, 1.0))
-        .def(
-            "orient_normals_towards_camera_location",
-            [](py::object self, py::handle location) {
-                auto c = as_vec3(location, "camera_location");
-                locked_mut(cloud(self).h, [&](o3d_pointcloud_t* pc) {
-                    return o3d_pointcloud_orient_normals_towards_camera_location(pc, c.data());
-                });
-            },
-            py::arg("camera_location") = py::make_tuple(0.0, 0.0, 0.0))
         .def(
             "compute_nearest_neighbor_distance",
             [](const PyPointCloud& self, int32_t num_threads) {
@@ -287,7 +191,8 @@ void define_pointcloud(py::module_& m) {
     def_has(cls, "has_colors", O3D_POINTCLOUD_COLORS);
     def_has(cls, "has_covariances", O3D_POINTCLOUD_COVARIANCES);
     def_array_access(cls);
-    O3DPY_DEF_SPATIAL(cls, pointcloud);
+    def_point_cloud_methods(cls);
+    def_aabb(cls, &o3d_pointcloud_get_axis_aligned_bounding_box);
     cls.def(
         "estimate_covariances",
         [](PyPointCloud& self, py::handle search_param) {

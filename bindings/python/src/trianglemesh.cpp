@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-// o3d.geometry.TriangleMesh over o3d_trianglemesh_t (trianglemesh.h): the container, zero-copy array
-// views, normals, transforms, bounds, clean-up and topology queries. Processing and primitives are in
+// o3d.geometry.TriangleMesh over o3d_trianglemesh_t (trianglemesh.h): the container, zero-copy array views and
+// textures; the methods that are one C call (normals, transforms, bounds, clean-up, topology queries, processing)
+// come from generated/trianglemesh_methods.h. The rest of processing and the primitives are in
 // trianglemesh_processing.cpp.
-#include <limits>
-
-#include "geometry_types.h"
+#include "generated/trianglemesh_methods.h"
 
 namespace o3dpy {
 
@@ -26,18 +25,6 @@ PyTriangleMesh clone_of(const PyTriangleMesh& self) {
     o3d_trianglemesh_t* out = nullptr;
     locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_clone(&out, m); });
     return PyTriangleMesh(out);
-}
-
-bool query_flag(const PyTriangleMesh& self, o3d_status (*fn)(int32_t*, const o3d_trianglemesh_t*)) {
-    int32_t v = 0;
-    locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return fn(&v, m); });
-    return v != 0;
-}
-
-/// Clean-up calls: in place (may shrink arrays, so copy-on-write first), returning self.
-py::object cleanup(py::object self, o3d_status (*fn)(o3d_trianglemesh_t*)) {
-    locked_mut(mesh_of(self).for_resize(), [&](o3d_trianglemesh_t* m) { return fn(m); });
-    return self;
 }
 
 void append_into(const MeshPtr& dst, MeshPtr src) {
@@ -124,9 +111,6 @@ void define_trianglemesh(py::module_& m) {
                         std::to_string(count(self, true)) + " triangles.";
              })
         .def(
-            "clear", [](py::object self) { return cleanup(self, &o3d_trianglemesh_clear); },
-            "Remove every array and texture. Returns self.")
-        .def(
             "__iadd__",
             [](py::object self, const PyTriangleMesh& other) {
                 MeshPtr src = other.h;
@@ -142,104 +126,6 @@ void define_trianglemesh(py::module_& m) {
                 return out;
             },
             py::arg("mesh"))
-        .def(
-            "compute_vertex_normals",
-            [](py::object self, bool normalized) {
-                locked_mut(mesh_of(self).for_resize(), [&](o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_compute_vertex_normals(m, normalized ? 1 : 0);
-                });
-                return self;
-            },
-            py::arg("normalized") = true, "Area-weighted vertex normals (also computes triangle normals). Returns self.")
-        .def(
-            "compute_triangle_normals",
-            [](py::object self, bool normalized) {
-                locked_mut(mesh_of(self).for_resize(), [&](o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_compute_triangle_normals(m, normalized ? 1 : 0);
-                });
-                return self;
-            },
-            py::arg("normalized") = true, "Triangle normals (b - a) x (c - a). Returns self.")
-        .def(
-            "normalize_normals",
-            [](py::object self) {
-                locked_mut(mesh_of(self).h, [](o3d_trianglemesh_t* m) { return o3d_trianglemesh_normalize_normals(m); });
-                return self;
-            },
-            "Scale vertex and triangle normals to unit length. Returns self.")
-        .def(
-            "paint_uniform_color",
-            [](py::object self, py::handle color) {
-                auto c = as_vec3(color, "color");
-                locked_mut(mesh_of(self).for_resize(),
-                           [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_paint_uniform_color(m, c.data()); });
-                return self;
-            },
-            py::arg("color"), "Set every vertex color to the RGB color. Returns self.")
-        .def(
-            "remove_duplicated_vertices", [](py::object self) { return cleanup(self, &o3d_trianglemesh_remove_duplicated_vertices); },
-            "Merge vertices with equal coordinates. Returns self.")
-        .def(
-            "remove_duplicated_triangles",
-            [](py::object self) { return cleanup(self, &o3d_trianglemesh_remove_duplicated_triangles); },
-            "Remove triangles with the same three vertices (any order). Returns self.")
-        .def(
-            "remove_degenerate_triangles",
-            [](py::object self) { return cleanup(self, &o3d_trianglemesh_remove_degenerate_triangles); },
-            "Remove triangles that repeat a vertex index. Returns self.")
-        .def(
-            "remove_unreferenced_vertices",
-            [](py::object self) { return cleanup(self, &o3d_trianglemesh_remove_unreferenced_vertices); },
-            "Remove vertices no triangle uses. Returns self.")
-        .def(
-            "remove_non_manifold_edges", [](py::object self) { return cleanup(self, &o3d_trianglemesh_remove_non_manifold_edges); },
-            "Remove the smallest triangles on edges shared by more than two. Returns self.")
-        .def(
-            "merge_close_vertices",
-            [](py::object self, double eps) {
-                locked_mut(mesh_of(self).for_resize(),
-                           [&](o3d_trianglemesh_t* m) { return o3d_trianglemesh_merge_close_vertices(m, eps); });
-                return self;
-            },
-            py::arg("eps"), "Merge vertices closer than eps into their mean. Returns self.")
-        .def("get_surface_area",
-             [](const PyTriangleMesh& self) {
-                 double v = 0;
-                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_surface_area(&v, m); });
-                 return v;
-             })
-        .def(
-            "get_volume",
-            [](const PyTriangleMesh& self) {
-                double v = 0;
-                locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_get_volume(&v, m); });
-                return v;
-            },
-            "Enclosed volume; raises ValueError (InvalidArgumentError) unless watertight and orientable.")
-        .def("is_watertight", [](const PyTriangleMesh& self) { return query_flag(self, &o3d_trianglemesh_is_watertight); })
-        .def(
-            "is_edge_manifold",
-            [](const PyTriangleMesh& self, bool allow_boundary_edges) {
-                int32_t v = 0;
-                locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_is_edge_manifold(&v, m, allow_boundary_edges ? 1 : 0);
-                });
-                return v != 0;
-            },
-            py::arg("allow_boundary_edges") = true)
-        .def("is_vertex_manifold",
-             [](const PyTriangleMesh& self) { return query_flag(self, &o3d_trianglemesh_is_vertex_manifold); })
-        .def("is_self_intersecting",
-             [](const PyTriangleMesh& self) { return query_flag(self, &o3d_trianglemesh_is_self_intersecting); })
-        .def("is_orientable", [](const PyTriangleMesh& self) { return query_flag(self, &o3d_trianglemesh_is_orientable); })
-        .def("euler_poincare_characteristic",
-             [](const PyTriangleMesh& self) {
-                 int64_t v = 0;
-                 locked_const(self.h, [&](const o3d_trianglemesh_t* m) {
-                     return o3d_trianglemesh_euler_poincare_characteristic(&v, m);
-                 });
-                 return v;
-             })
         .def(
             "cluster_connected_triangles",
             [](const PyTriangleMesh& self) {
@@ -282,7 +168,8 @@ void define_trianglemesh(py::module_& m) {
         if (a.which != O3D_MESH_TRIANGLES) def_has(cls, (std::string("has_") + a.name).c_str(), a.which);
     }
     def_array_access(cls);
-    O3DPY_DEF_SPATIAL(cls, trianglemesh);
+    def_triangle_mesh_methods(cls);
+    def_aabb(cls, &o3d_trianglemesh_get_axis_aligned_bounding_box);
 }
 
 }  // namespace o3dpy

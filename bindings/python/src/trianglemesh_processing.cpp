@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
-// o3d.geometry.TriangleMesh processing (sampling, simplification, smoothing, subdivision, crop) and the
-// static create_* primitives, with Open3D 0.20's names and keyword defaults. Each C call runs with the
-// GIL released under the mesh's shared lock and writes a new mesh or cloud.
-#include <limits>
-
+// o3d.geometry.TriangleMesh processing and primitives that take more than the C call's arguments (Poisson-disk
+// sampling, crop, the create_* primitives with Open3D's UV flags, create_mobius), with Open3D 0.20's names and
+// keyword defaults; the rest (uniform sampling, simplification, smoothing, subdivision) is generated
+// (def_triangle_mesh_methods). Each C call runs with the GIL released and writes a new mesh or cloud.
 #include "geometry_types.h"
 
 namespace o3dpy {
@@ -30,12 +29,6 @@ PyTriangleMesh primitive(F&& f) {
     return PyTriangleMesh(out);
 }
 
-size_t non_negative(int64_t v, const char* what) {
-    if (v < 0) invalid(std::string(what) + " must be >= 0, got " + std::to_string(v));
-    return (size_t)v;
-}
-
-
 /// Open3D's create_uv_map / map_texture_to_each_face: the C primitives make no UVs, so asking for them
 /// raises rather than silently returning a mesh without them.
 void no_uv_map(bool create_uv_map, const char* fn) {
@@ -53,18 +46,6 @@ void declare_trianglemesh_enums(py::module_& m) {
 void define_trianglemesh_processing(py::module_& m) {
     auto cls = static_cast<py::class_<PyTriangleMesh>>(m.attr("TriangleMesh"));
     cls.def(
-           "sample_points_uniformly",
-           [](const PyTriangleMesh& self, int64_t number_of_points, bool use_triangle_normal, py::handle seed) {
-               const size_t n = non_negative(number_of_points, "number_of_points");
-               const uint64_t s = seed_or_random(seed);
-               return derive_cloud(self, [&](o3d_pointcloud_t** out, const o3d_trianglemesh_t* m) {
-                   return o3d_trianglemesh_sample_points_uniformly(out, m, n, use_triangle_normal ? 1 : 0, s);
-               });
-           },
-           py::arg("number_of_points") = 100, py::arg("use_triangle_normal") = false, py::arg("seed") = py::none(),
-           "Area-weighted uniform samples on the surface (normals and colors interpolated). seed=None draws a "
-           "new seed each call (as Open3D); an integer seed gives the same points every time.")
-        .def(
             "sample_points_poisson_disk",
             [](const PyTriangleMesh& self, int64_t number_of_points, double init_factor, py::handle pcl,
                bool use_triangle_normal, py::handle seed) {
@@ -81,70 +62,6 @@ void define_trianglemesh_processing(py::module_& m) {
             py::arg("use_triangle_normal") = false, py::arg("seed") = py::none(),
             "Poisson-disk samples by sample elimination from init_factor * number_of_points uniform samples. "
             "pcl (Open3D's initial cloud) must be None.")
-        .def(
-            "simplify_vertex_clustering",
-            [](const PyTriangleMesh& self, double voxel_size, SimplificationContraction contraction) {
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_simplify_vertex_clustering(out, m, voxel_size, (int32_t)contraction);
-                });
-            },
-            py::arg("voxel_size"), py::arg("contraction") = SimplificationContraction::Average)
-        .def(
-            "simplify_quadric_decimation",
-            [](const PyTriangleMesh& self, int64_t target, double maximum_error, double boundary_weight) {
-                const size_t t = non_negative(target, "target_number_of_triangles");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_simplify_quadric_decimation(out, m, t, maximum_error, boundary_weight);
-                });
-            },
-            py::arg("target_number_of_triangles"), py::arg("maximum_error") = std::numeric_limits<double>::infinity(),
-            py::arg("boundary_weight") = 1.0)
-        .def(
-            "filter_smooth_simple",
-            [](const PyTriangleMesh& self, int64_t iterations, FilterScope scope) {
-                const int32_t it = int32_of(iterations, "number_of_iterations");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_filter_smooth_simple(out, m, it, (int32_t)scope);
-                });
-            },
-            py::arg("number_of_iterations") = 1, py::arg("filter_scope") = FilterScope::All)
-        .def(
-            "filter_smooth_laplacian",
-            [](const PyTriangleMesh& self, int64_t iterations, double lambda_filter, FilterScope scope) {
-                const int32_t it = int32_of(iterations, "number_of_iterations");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_filter_smooth_laplacian(out, m, it, lambda_filter, (int32_t)scope);
-                });
-            },
-            py::arg("number_of_iterations") = 1, py::arg("lambda_filter") = 0.5, py::arg("filter_scope") = FilterScope::All)
-        .def(
-            "filter_smooth_taubin",
-            [](const PyTriangleMesh& self, int64_t iterations, double lambda_filter, double mu, FilterScope scope) {
-                const int32_t it = int32_of(iterations, "number_of_iterations");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_filter_smooth_taubin(out, m, it, lambda_filter, mu, (int32_t)scope);
-                });
-            },
-            py::arg("number_of_iterations") = 1, py::arg("lambda_filter") = 0.5, py::arg("mu") = -0.53,
-            py::arg("filter_scope") = FilterScope::All)
-        .def(
-            "subdivide_midpoint",
-            [](const PyTriangleMesh& self, int64_t iterations) {
-                const int32_t it = int32_of(iterations, "number_of_iterations");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_subdivide_midpoint(out, m, it);
-                });
-            },
-            py::arg("number_of_iterations") = 1)
-        .def(
-            "subdivide_loop",
-            [](const PyTriangleMesh& self, int64_t iterations) {
-                const int32_t it = int32_of(iterations, "number_of_iterations");
-                return derive_mesh(self, [&](o3d_trianglemesh_t** out, const o3d_trianglemesh_t* m) {
-                    return o3d_trianglemesh_subdivide_loop(out, m, it);
-                });
-            },
-            py::arg("number_of_iterations") = 1)
         .def(
             "crop",
             [](const PyTriangleMesh& self, py::handle bounding_box) {
@@ -198,39 +115,6 @@ void define_trianglemesh_processing(py::module_& m) {
             },
             py::arg("radius") = 1.0, py::arg("height") = 2.0, py::arg("resolution") = 20, py::arg("split") = 1,
             py::arg("create_uv_map") = false)
-        .def_static(
-            "create_torus",
-            [](double torus_radius, double tube_radius, int64_t radial, int64_t tubular) {
-                const int32_t r = int32_of(radial, "radial_resolution"), t = int32_of(tubular, "tubular_resolution");
-                return primitive([&](o3d_trianglemesh_t** out) {
-                    return o3d_trianglemesh_create_torus(out, torus_radius, tube_radius, r, t);
-                });
-            },
-            py::arg("torus_radius") = 1.0, py::arg("tube_radius") = 0.5, py::arg("radial_resolution") = 30,
-            py::arg("tubular_resolution") = 20)
-        .def_static(
-            "create_arrow",
-            [](double cylinder_radius, double cone_radius, double cylinder_height, double cone_height, int64_t resolution,
-               int64_t cylinder_split, int64_t cone_split) {
-                const int32_t r = int32_of(resolution, "resolution"), cs = int32_of(cylinder_split, "cylinder_split"),
-                              ks = int32_of(cone_split, "cone_split");
-                return primitive([&](o3d_trianglemesh_t** out) {
-                    return o3d_trianglemesh_create_arrow(out, cylinder_radius, cone_radius, cylinder_height, cone_height, r,
-                                                         cs, ks);
-                });
-            },
-            py::arg("cylinder_radius") = 1.0, py::arg("cone_radius") = 1.5, py::arg("cylinder_height") = 5.0,
-            py::arg("cone_height") = 4.0, py::arg("resolution") = 20, py::arg("cylinder_split") = 4,
-            py::arg("cone_split") = 1)
-        .def_static(
-            "create_coordinate_frame",
-            [](double size, py::handle origin) {
-                auto o = as_vec3(origin, "origin");
-                return primitive(
-                    [&](o3d_trianglemesh_t** out) { return o3d_trianglemesh_create_coordinate_frame(out, size, o.data()); });
-            },
-            py::arg("size") = 1.0, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
-            "Axes x (red), y (green), z (blue) of length size at origin.")
         .def_static(
             "create_tetrahedron",
             [](double radius, bool create_uv_map) {

@@ -4,7 +4,7 @@
 // Defaults come from o3d_render_option_init and o3d_render_material_init; every check on a value is the
 // C library's, so a bad option raises where the C call rejects it.
 
-#include "geometry_types.h"
+#include "generated/visualization_methods.h"
 
 namespace o3dpy {
 namespace {
@@ -299,27 +299,6 @@ void define_scene(py::module_& m) {
             "Add a copy of a PointCloud, TriangleMesh, LineSet, VoxelGrid or bounding box (drawn as its edges) "
             "under a new name. material: a MaterialRecord (None: MaterialRecord()). The last argument is "
             "accepted for Open3D's signature and ignored. A taken or empty name raises.")
-        .def("remove_geometry",
-             [](const PyScene& self, const std::string& name) {
-                 check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) {
-                     return o3d_offscreen_renderer_remove_geometry(r, name.c_str());
-                 }));
-             },
-             py::arg("name"), "Remove the named geometry (a name not in the scene raises; Open3D ignores it).")
-        .def("has_geometry",
-             [](const PyScene& self, const std::string& name) {
-                 int32_t has = 0;
-                 check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) {
-                     return o3d_offscreen_renderer_has_geometry(&has, r, name.c_str());
-                 }));
-                 return has != 0;
-             },
-             py::arg("name"))
-        .def("clear_geometry",
-             [](const PyScene& self) {
-                 check(with_renderer(self.h, [](o3d_offscreen_renderer_t* r) { return o3d_offscreen_renderer_clear_geometries(r); }));
-             },
-             "Remove every geometry.")
         .def(
             "set_background",
             [](const PyScene& self, py::handle color, py::handle image) {
@@ -331,6 +310,7 @@ void define_scene(py::module_& m) {
             },
             py::arg("color"), py::arg("image") = py::none(),
             "Background color [r, g, b, a] in [0, 1] (alpha ignored: images are RGB); sets render_option.background_color.");
+    def_open3d_scene_methods(cls);
 }
 
 void define_renderer(py::module_& m) {
@@ -369,18 +349,9 @@ void define_renderer(py::module_& m) {
                 check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) { return o3d_offscreen_renderer_set_render_option(r, &v); }));
             },
             "The RenderOption (o3d extra): a live view (setting a field changes the renderer at once); assign a "
-            "RenderOption to replace it all. Bad values raise.")
-        .def(
-            "setup_camera",
-            [](const PyRenderer& self, double fov, py::handle center, py::handle eye, py::handle up) {
-                auto c = as_vec3(center, "center"), e = as_vec3(eye, "eye"), u = as_vec3(up, "up");
-                check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) {
-                    return o3d_offscreen_renderer_setup_camera_fov(r, fov, c.data(), e.data(), u.data());
-                }));
-            },
-            py::arg("vertical_field_of_view"), py::arg("center"), py::arg("eye"), py::arg("up"),
-            "A perspective camera at eye looking at center, up up, with this vertical field of view (degrees).")
-        .def(
+            "RenderOption to replace it all. Bad values raise.");
+    def_offscreen_renderer_methods(cls);  // setup_camera(vertical_field_of_view, ...) first, as Open3D lists it
+    cls.def(
             "setup_camera",
             [](const PyRenderer& self, const PyIntrinsic& intrinsics, py::handle extrinsic) {
                 setup_pinhole(self, intrinsics.v, extrinsic);
@@ -404,16 +375,6 @@ void define_renderer(py::module_& m) {
             py::arg("intrinsic_matrix"), py::arg("extrinsic_matrix"), py::arg("intrinsic_width_px"),
             py::arg("intrinsic_height_px"), "A pinhole camera from a 3x3 K, a 4x4 extrinsic and the image size.")
         .def(
-            "setup_camera_lookat",
-            [](const PyRenderer& self, py::handle lookat, py::handle front, py::handle up, double zoom) {
-                auto l = as_vec3(lookat, "lookat"), f = as_vec3(front, "front"), u = as_vec3(up, "up");
-                check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) {
-                    return o3d_offscreen_renderer_setup_camera_lookat(r, l.data(), f.data(), u.data(), zoom);
-                }));
-            },
-            py::arg("lookat"), py::arg("front"), py::arg("up"), py::arg("zoom") = 0.7,
-            "o3d extra: draw_geometries' lookat/front/up/zoom view, resolved against the scene's box at each render.")
-        .def(
             "get_camera",
             [](const PyRenderer& self) {
                 PyCameraParameters p;
@@ -430,16 +391,7 @@ void define_renderer(py::module_& m) {
              [](const PyRenderer& self, bool z_in_view_space) { return render(self, true, z_in_view_space); },
              py::arg("z_in_view_space") = false,
              "Render the depth to a float32 Image: the depth buffer in [0, 1] (1 where empty), or with "
-             "z_in_view_space=True the distance along the camera axis (0 where empty).")
-        .def(
-            "render_to_png",
-            [](const PyRenderer& self, py::handle filename) {
-                const std::string path = path_of(filename);
-                check(with_renderer(self.h, [&](o3d_offscreen_renderer_t* r) {
-                    return o3d_offscreen_renderer_render_to_png(r, path.c_str());
-                }), path);
-            },
-            py::arg("filename"), "o3d extra: render and write a PNG file in one call.");
+             "z_in_view_space=True the distance along the camera axis (0 where empty).");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
+#include "o3dpp/generated/image.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
@@ -22,8 +23,11 @@ using ImageArrayFns = ArrayFns<&o3d_image_has_array, &o3d_image_array_shape, &o3
                                &o3d_image_array_view, &o3d_image_array_mutable_view, &o3d_image_set_array, nullptr>;
 }  // namespace detail
 
+/// @brief An image (o3d.geometry.Image). The methods that pass their arguments to one C function are generated
+/// (detail::ImageCalls).
 class Image : public Owner<Image, o3d_image_t, &o3d_image_destroy>,
-              public Arrays<Image, ImageArray, detail::ImageArrayFns> {
+              public Arrays<Image, ImageArray, detail::ImageArrayFns>,
+              public detail::ImageCalls<Image> {
 public:
     /// @brief Zero-filled image; bytes_per_channel 1 (uint8), 2 (uint16) or 4 (float32).
     Image(int width, int height, int num_channels, int bytes_per_channel)
@@ -49,11 +53,6 @@ public:
     /// @brief Deep copy.
     Image clone() const { return derive(&o3d_image_clone); }
 
-    int width() const { return query(&o3d_image_width); }
-    int height() const { return query(&o3d_image_height); }
-    int num_channels() const { return query(&o3d_image_num_channels); }
-    int bytes_per_channel() const { return query(&o3d_image_bytes_per_channel); }
-
     /// @brief Borrowed pixel bytes: valid until the next mutating call or destruction.
     Span<const uint8_t> data() const { return array<uint8_t>(ImageArray::Data).flat(); }
     Span<uint8_t> data_mutable() { return array_mutable<uint8_t>(ImageArray::Data).flat(); }
@@ -70,8 +69,6 @@ public:
         return out;
     }
 
-    /// @brief Filtered copy of a 1-channel float image.
-    Image filter(ImageFilter type) const { return derive(&o3d_image_filter, static_cast<int32_t>(type)); }
     /// @brief Open3D's create_pyramid: level 0 is a copy, each next level the previous one (Gaussian3
     /// filtered when asked) downsampled by 2. 1-channel float32 input.
     std::vector<Image> create_pyramid(int num_of_levels, bool with_gaussian_filter = true) const {
@@ -85,18 +82,6 @@ public:
             levels.push_back(with_gaussian_filter ? prev.filter(ImageFilter::Gaussian3).downsample() : prev.downsample());
         }
         return levels;
-    }
-    /// @brief Half-size float image of 2x2 means.
-    Image downsample() const { return derive(&o3d_image_downsample); }
-    Image flip_vertical() const { return derive(&o3d_image_flip_vertical); }
-    Image flip_horizontal() const { return derive(&o3d_image_flip_horizontal); }
-    /// @brief 1-channel float copy (8-bit scaled to [0,1]).
-    Image create_float_image(ImageConvert convert = ImageConvert::Weighted) const {
-        return derive(&o3d_image_create_float_image, static_cast<int32_t>(convert));
-    }
-    /// @brief Depth in metres: raw / depth_scale, beyond depth_trunc set to 0.
-    Image convert_depth_to_float(double depth_scale = 1000.0, double depth_trunc = 3.0) const {
-        return derive(&o3d_image_convert_depth_to_float, depth_scale, depth_trunc);
     }
 };
 

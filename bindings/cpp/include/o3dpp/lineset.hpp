@@ -11,6 +11,7 @@
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
+#include "o3dpp/generated/lineset.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -29,8 +30,11 @@ using LineSetArrayFns =
 }  // namespace detail
 
 /// @brief o3d.geometry.LineSet. Line indices may hold any value; operations that follow them check them.
+/// The methods that pass their arguments to one C function are generated (detail::LineSetCalls).
 class LineSet : public Owner<LineSet, o3d_lineset_t, &o3d_lineset_destroy>,
-                public Arrays<LineSet, LineSetArray, detail::LineSetArrayFns> {
+                public Arrays<LineSet, LineSetArray, detail::LineSetArrayFns>,
+                public detail::LineSetCalls<LineSet> {
+    friend class detail::LineSetCalls<LineSet>;  // checks its calls with done
     using A = LineSetArray;
 
 public:
@@ -46,9 +50,6 @@ public:
     /// @brief Deep copy.
     LineSet clone() const { return derive(&o3d_lineset_clone); }
 
-    std::size_t num_points() const { return query(&o3d_lineset_num_points); }
-    std::size_t num_lines() const { return query(&o3d_lineset_num_lines); }
-
     // --- named arrays (see Arrays for the generic accessor); views are borrowed until the next mutation ---
     void set_points(const std::vector<Vec3>& v) { set_array(A::Points, v); }
     /// @brief One color per line, RGB in [0, 1].
@@ -61,9 +62,6 @@ public:
     Rows3<const double> colors() const { return array(A::Colors); }
     /// @brief Borrowed lines as 2 * num_lines() values.
     Span<const int32_t> lines() const { return array<int32_t>(A::Lines).flat(); }
-
-    LineSet& paint_uniform_color(const Vec3& rgb) { return done(o3d_lineset_paint_uniform_color(get(), rgb.data())); }
-    LineSet& transform(const Mat4& t) { return done(o3d_lineset_transform(get(), t.data())); }
 
     /// @brief cloud0's points then cloud1's, one line per {index into cloud0, index into cloud1}.
     static LineSet create_from_point_cloud_correspondences(const PointCloud& cloud0, const PointCloud& cloud1,
@@ -78,14 +76,6 @@ public:
     static LineSet create_from_oriented_bounding_box(const OrientedBoundingBox& obb) {
         const o3d_obb_t c = obb.to_c();
         return create(&o3d_lineset_create_from_oriented_bounding_box, &c);
-    }
-    /// @brief The 12 edges of [min_bound, max_bound].
-    static LineSet create_from_axis_aligned_bounding_box(const Vec3& min_bound, const Vec3& max_bound) {
-        return create(&o3d_lineset_create_from_axis_aligned_bounding_box, min_bound.data(), max_bound.data());
-    }
-    /// @brief The mesh's unique edges, on its vertices.
-    static LineSet create_from_triangle_mesh(const TriangleMesh& mesh) {
-        return create(&o3d_lineset_create_from_triangle_mesh, mesh.get());
     }
 };
 

@@ -13,6 +13,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/options.hpp"
+#include "o3dpp/generated/pointcloud.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
@@ -41,8 +42,11 @@ using PointCloudArrayFns =
 }  // namespace detail
 
 /// @brief A point cloud: N points, optional N normals, N colors (RGB in [0,1]) and N covariances. Move-only.
+/// The methods that pass their arguments to one C function are generated (detail::PointCloudCalls).
 class PointCloud : public Owner<PointCloud, o3d_pointcloud_t, &o3d_pointcloud_destroy>,
-                   public Arrays<PointCloud, PointCloudArray, detail::PointCloudArrayFns> {
+                   public Arrays<PointCloud, PointCloudArray, detail::PointCloudArrayFns>,
+                   public detail::PointCloudCalls<PointCloud> {
+    friend class detail::PointCloudCalls<PointCloud>;  // checks its calls with done
     using A = PointCloudArray;
 
 public:
@@ -56,9 +60,7 @@ public:
     /// @brief Deep copy.
     PointCloud clone() const { return derive(&o3d_pointcloud_clone); }
 
-    std::size_t size() const { return query(&o3d_pointcloud_size); }
     bool empty() const { return size() == 0; }
-    void clear() { check(o3d_pointcloud_clear(get())); }
 
     // --- named arrays (see Arrays for the generic accessor): setters copy once, float converted in that copy;
     // views are borrowed until the next mutating call or destruction ---
@@ -88,72 +90,22 @@ public:
     Rows3<double> colors_mutable() { return array_mutable(A::Colors); }
 
     /// @brief Concatenate `other` (Open3D `pcd += other`).
-    PointCloud& operator+=(const PointCloud& other) { return done(o3d_pointcloud_append(get(), other.get())); }
-    PointCloud& append(const PointCloud& other) { return *this += other; }
-    PointCloud& transform(const Mat4& t) { return done(o3d_pointcloud_transform(get(), t.data())); }
-    PointCloud& translate(const Vec3& t, bool relative = true) {
-        return done(o3d_pointcloud_translate(get(), t.data(), relative ? 1 : 0));
-    }
-    /// @brief Rotate about the center.
-    PointCloud& rotate(const Mat3& r) { return done(o3d_pointcloud_rotate(get(), r.data(), nullptr)); }
-    PointCloud& rotate(const Mat3& r, const Vec3& center) {
-        return done(o3d_pointcloud_rotate(get(), r.data(), center.data()));
-    }
-    /// @brief Scale about the center.
-    PointCloud& scale(double s) { return done(o3d_pointcloud_scale(get(), s, nullptr)); }
-    PointCloud& scale(double s, const Vec3& center) { return done(o3d_pointcloud_scale(get(), s, center.data())); }
-    Vec3 get_min_bound() const { return query3(&o3d_pointcloud_get_min_bound); }
-    Vec3 get_max_bound() const { return query3(&o3d_pointcloud_get_max_bound); }
-    Vec3 get_center() const { return query3(&o3d_pointcloud_get_center); }
+    PointCloud& operator+=(const PointCloud& other) { return append(other); }
     /// @brief {min corner, max corner}.
     std::array<Vec3, 2> get_axis_aligned_bounding_box() const {
         std::array<Vec3, 2> box{};
         check(o3d_pointcloud_get_axis_aligned_bounding_box(box[0].data(), box[1].data(), get()));
         return box;
     }
-    PointCloud& paint_uniform_color(const Vec3& rgb) {
-        return done(o3d_pointcloud_paint_uniform_color(get(), rgb.data()));
-    }
 
     PointCloud select_by_index(const std::vector<int32_t>& indices, bool invert = false) const {
         return derive(&o3d_pointcloud_select_by_index, indices.data(), indices.size(), invert ? 1 : 0);
-    }
-    PointCloud& remove_non_finite_points(bool remove_nan = true, bool remove_infinite = true) {
-        return done(o3d_pointcloud_remove_non_finite_points(get(), remove_nan ? 1 : 0, remove_infinite ? 1 : 0));
-    }
-    PointCloud& normalize_normals() { return done(o3d_pointcloud_normalize_normals(get())); }
-
-    PointCloud voxel_down_sample(double voxel_size) const {
-        return derive(&o3d_pointcloud_voxel_down_sample, voxel_size);
-    }
-    PointCloud uniform_down_sample(std::size_t every_k_points) const {
-        return derive(&o3d_pointcloud_uniform_down_sample, every_k_points);
-    }
-    PointCloud random_down_sample(double sampling_ratio, uint64_t seed = 0) const {
-        return derive(&o3d_pointcloud_random_down_sample, sampling_ratio, seed);
-    }
-    PointCloud farthest_point_down_sample(std::size_t num_samples, std::size_t start_index = 0) const {
-        return derive(&o3d_pointcloud_farthest_point_down_sample, num_samples, start_index);
     }
 
     /// @brief PCA normals (default: the library's search parameter). num_threads 0 = library default.
     PointCloud& estimate_normals(const SearchParam& param = SearchParam{}, int num_threads = 0) {
         const o3d_search_param_t c = param.to_c();
         return done(o3d_pointcloud_estimate_normals(get(), &c, num_threads));
-    }
-    /// @brief Flip normals towards `direction` (without: the library's default, +Z).
-    PointCloud& orient_normals_to_align_with_direction() {
-        return done(o3d_pointcloud_orient_normals_to_align_with_direction(get(), nullptr));
-    }
-    PointCloud& orient_normals_to_align_with_direction(const Vec3& direction) {
-        return done(o3d_pointcloud_orient_normals_to_align_with_direction(get(), direction.data()));
-    }
-    /// @brief Flip normals towards `camera_location` (without: the library's default, the origin).
-    PointCloud& orient_normals_towards_camera_location() {
-        return done(o3d_pointcloud_orient_normals_towards_camera_location(get(), nullptr));
-    }
-    PointCloud& orient_normals_towards_camera_location(const Vec3& camera_location) {
-        return done(o3d_pointcloud_orient_normals_towards_camera_location(get(), camera_location.data()));
     }
     std::vector<double> compute_nearest_neighbor_distance(int num_threads = 0) const {
         return copy_out<double>(&o3d_pointcloud_compute_nearest_neighbor_distance, num_threads);
@@ -178,10 +130,6 @@ public:
         return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
             return o3d_pointcloud_remove_radius_outlier(o, idx, cap, n, get(), nb_points, radius);
         });
-    }
-    /// @brief Points inside the box [min_bound, max_bound], bounds included (outside when `invert`).
-    PointCloud crop_aabb(const Vec3& min_bound, const Vec3& max_bound, bool invert = false) const {
-        return derive(&o3d_pointcloud_crop_aabb, min_bound.data(), max_bound.data(), invert ? 1 : 0);
     }
     /// @brief Points inside `obb`, boundary included (outside when `invert`).
     PointCloud crop(const OrientedBoundingBox& obb, bool invert = false) const {

@@ -10,6 +10,7 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
+#include "o3dpp/generated/voxelgrid.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -32,43 +33,20 @@ using VoxelGridArrayFns = ArrayFns<&o3d_voxelgrid_has_array, &o3d_voxelgrid_arra
 
 /// @brief o3d.geometry.VoxelGrid: cells of edge voxel_size(), cell (0,0,0) starting at origin().
 /// Immutable once built (has_array, array_shape and get_array only). Voxels come out sorted by grid index
-/// (x, then y, then z).
+/// (x, then y, then z). The methods that pass their arguments to one C function are generated
+/// (detail::VoxelGridCalls).
 class VoxelGrid : public Owner<VoxelGrid, o3d_voxelgrid_t, &o3d_voxelgrid_destroy>,
-                  public Arrays<VoxelGrid, VoxelGridArray, detail::VoxelGridArrayFns> {
+                  public Arrays<VoxelGrid, VoxelGridArray, detail::VoxelGridArrayFns>,
+                  public detail::VoxelGridCalls<VoxelGrid> {
 public:
     /// @brief Take ownership of `owned` (must not be NULL).
     explicit VoxelGrid(o3d_voxelgrid_t* owned) : Owner(owned) {}
-
-    /// @brief Cells holding at least one point; origin = the cloud's min bound - voxel_size / 2.
-    static VoxelGrid create_from_point_cloud(const PointCloud& cloud, double voxel_size) {
-        return create(&o3d_voxelgrid_create_from_point_cloud, cloud.get(), voxel_size);
-    }
-    /// @brief As create_from_point_cloud on the grid starting at min_bound; points outside are ignored.
-    static VoxelGrid create_from_point_cloud_within_bounds(const PointCloud& cloud, double voxel_size,
-                                                           const Vec3& min_bound, const Vec3& max_bound) {
-        return create(&o3d_voxelgrid_create_from_point_cloud_within_bounds, cloud.get(), voxel_size, min_bound.data(),
-                      max_bound.data());
-    }
-    /// @brief Cells intersecting at least one triangle.
-    static VoxelGrid create_from_triangle_mesh(const TriangleMesh& mesh, double voxel_size) {
-        return create(&o3d_voxelgrid_create_from_triangle_mesh, mesh.get(), voxel_size);
-    }
-
-    double voxel_size() const { return query(&o3d_voxelgrid_get_voxel_size); }
-    Vec3 origin() const { return query3(&o3d_voxelgrid_get_origin); }
-    std::size_t num_voxels() const { return query(&o3d_voxelgrid_num_voxels); }
     /// @brief The occupied cells, sorted by grid index.
     std::vector<Voxel> get_voxels() const {
         const std::vector<GridIndex> index = get_array<GridIndex>(VoxelGridArray::GridIndices);
         const std::vector<Vec3> color = get_array<Vec3>(VoxelGridArray::Colors);
         std::vector<Voxel> out(index.size() < color.size() ? index.size() : color.size());
         for (std::size_t i = 0; i < out.size(); ++i) out[i] = Voxel{index[i], color[i]};
-        return out;
-    }
-    /// @brief Grid index of the cell containing `point` (occupied or not).
-    GridIndex get_voxel(const Vec3& point) const {
-        GridIndex out{};
-        check(o3d_voxelgrid_get_voxel(out.data(), get(), point.data()));
         return out;
     }
     /// @brief For each query point, whether its cell is occupied.

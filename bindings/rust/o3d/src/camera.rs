@@ -83,14 +83,6 @@ impl CameraTrajectory {
         new_trajectory(|out| unsafe { sys::o3d_camera_trajectory_create(out) })
     }
 
-    /// Number of poses.
-    pub fn len(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_camera_trajectory_size(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
     /// True when there are no poses.
     pub fn is_empty(&self) -> Result<bool> {
         Ok(self.len()? == 0)
@@ -117,12 +109,6 @@ impl CameraTrajectory {
         let raw = intrinsic.to_raw();
         // SAFETY: valid handle, struct and 16 doubles.
         check(unsafe { sys::o3d_camera_trajectory_append(self.raw.as_ptr(), &raw, mat4_ptr(extrinsic)) })
-    }
-
-    /// Remove all poses.
-    pub fn clear(&mut self) -> Result<()> {
-        // SAFETY: valid handle, exclusively borrowed.
-        check(unsafe { sys::o3d_camera_trajectory_clear(self.raw.as_ptr()) })
     }
 }
 

@@ -88,33 +88,6 @@ impl Image {
         Image::from_bytes(width, height, 1, PixelType::F32, bytes)
     }
 
-    fn int(&self, f: unsafe extern "C" fn(*mut i32, *const sys::o3d_image_t) -> sys::o3d_status) -> Result<i32> {
-        let mut v = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { f(&mut v, self.as_raw()) })?;
-        Ok(v)
-    }
-
-    /// Width in pixels.
-    pub fn width(&self) -> Result<i32> {
-        self.int(sys::o3d_image_width)
-    }
-
-    /// Height in pixels.
-    pub fn height(&self) -> Result<i32> {
-        self.int(sys::o3d_image_height)
-    }
-
-    /// Channels per pixel (1, 3 or 4).
-    pub fn num_channels(&self) -> Result<i32> {
-        self.int(sys::o3d_image_num_channels)
-    }
-
-    /// Bytes per channel (1, 2 or 4).
-    pub fn bytes_per_channel(&self) -> Result<i32> {
-        self.int(sys::o3d_image_bytes_per_channel)
-    }
-
     /// The pixel type.
     pub fn pixel_type(&self) -> Result<PixelType> {
         PixelType::from_bytes(self.bytes_per_channel()?)
@@ -151,20 +124,6 @@ impl Image {
         Ok(self.data()?.chunks_exact(2).map(|c| u16::from_ne_bytes([c[0], c[1]])).collect())
     }
 
-    fn derived(
-        &self,
-        f: unsafe extern "C" fn(*mut *mut sys::o3d_image_t, *const sys::o3d_image_t) -> sys::o3d_status,
-    ) -> Result<Image> {
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { f(out, self.as_raw()) })
-    }
-
-    /// Filtered copy of a 1-channel `f32` image (others: Err; see [`Self::create_float_image`]).
-    pub fn filter(&self, filter: ImageFilter) -> Result<Image> {
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { sys::o3d_image_filter(out, self.as_raw(), filter.raw()) })
-    }
-
     /// Open3D's `create_pyramid`: level 0 is a copy, each next level the previous one (Gaussian3
     /// filtered when asked) downsampled by 2. 1-channel `f32` input.
     pub fn create_pyramid(&self, num_of_levels: usize, with_gaussian_filter: bool) -> Result<Vec<Image>> {
@@ -183,33 +142,6 @@ impl Image {
             levels.push(next);
         }
         Ok(levels)
-    }
-
-    /// Half-size 1-channel `f32` image of 2x2 means.
-    pub fn downsample(&self) -> Result<Image> {
-        self.derived(sys::o3d_image_downsample)
-    }
-
-    /// Copy flipped upside down.
-    pub fn flip_vertical(&self) -> Result<Image> {
-        self.derived(sys::o3d_image_flip_vertical)
-    }
-
-    /// Copy flipped left to right.
-    pub fn flip_horizontal(&self) -> Result<Image> {
-        self.derived(sys::o3d_image_flip_horizontal)
-    }
-
-    /// 1-channel `f32` copy (8-bit scaled to `[0, 1]`, color made gray by `convert`).
-    pub fn create_float_image(&self, convert: ConvertType) -> Result<Image> {
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { sys::o3d_image_create_float_image(out, self.as_raw(), convert.raw()) })
-    }
-
-    /// Depth in metres: raw depth / `depth_scale`, values above `depth_trunc` set to 0.
-    pub fn convert_depth_to_float(&self, depth_scale: f64, depth_trunc: f64) -> Result<Image> {
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { sys::o3d_image_convert_depth_to_float(out, self.as_raw(), depth_scale, depth_trunc) })
     }
 }
 

@@ -11,6 +11,8 @@ use crate::feature::{rows_of, Feature};
 use crate::pointcloud::{PointCloud, SearchParam};
 use crate::util::{copy_out, handle, to_i32};
 
+include!("generated/kdtree.rs");
+
 handle! {
     /// A KD-tree over 3-D points, or over points of any dimension ([`KDTreeFlann::from_feature`],
     /// [`KDTreeFlann::from_points_xd`]). It copies the points, so it outlives what it was built from.
@@ -120,14 +122,6 @@ impl KDTreeFlann {
         new_tree(|out| unsafe { sys::o3d_kdtree_create_from_points_xd(out, data.as_ptr(), dimension, n) })
     }
 
-    /// Dimension of the indexed points (3 for trees over clouds).
-    pub fn dimension(&self) -> Result<usize> {
-        let mut d = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_kdtree_dimension(&mut d, self.raw.as_ptr()) })?;
-        Ok(d)
-    }
-
     /// Search `queries.len() / dimension` query points of `dimension` values each (which must be
     /// the tree's dimension) at once, on `num_threads` threads (0 = the library default), keeping
     /// the result in the library.
@@ -176,14 +170,6 @@ impl KDTreeFlann {
     /// At most `max_nn` nearest points within `radius` (Open3D `search_hybrid_vector_xd`).
     pub fn search_hybrid_vector_xd(&self, query: &[f64], radius: f64, max_nn: usize) -> Result<(Vec<i32>, Vec<f64>)> {
         self.search_vector_xd(query, SearchParam::Hybrid { radius, max_nn })
-    }
-
-    /// Number of indexed points.
-    pub fn len(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_kdtree_size(&mut n, self.raw.as_ptr()) })?;
-        Ok(n)
     }
 
     /// True when the tree indexes no points.

@@ -8,7 +8,9 @@ use crate::boundingbox::OrientedBoundingBox;
 use crate::error::{check, Result};
 use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
-use crate::util::{handle, mat4_ptr};
+use crate::util::handle;
+
+include!("generated/lineset.rs");
 
 handle! {
     /// Points (N x 3), lines (M pairs of point indices) and optional per-line colors (M x 3, RGB in
@@ -54,22 +56,6 @@ impl LineSet {
         set.set_points(points)?;
         set.set_lines(lines)?;
         Ok(set)
-    }
-
-    /// Number of points.
-    pub fn num_points(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_lineset_num_points(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
-    /// Number of lines.
-    pub fn num_lines(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_lineset_num_lines(&mut n, self.as_raw()) })?;
-        Ok(n)
     }
 
     /// Replace the points.
@@ -122,20 +108,6 @@ impl LineSet {
         INDICES.to_vec(self, sys::O3D_LINESET_LINES)
     }
 
-    /// Set every line's color to `rgb`.
-    pub fn paint_uniform_color(&mut self, rgb: [f64; 3]) -> Result<&mut Self> {
-        // SAFETY: 3 doubles.
-        check(unsafe { sys::o3d_lineset_paint_uniform_color(self.raw_mut(), rgb.as_ptr()) })?;
-        Ok(self)
-    }
-
-    /// Apply a row-major 4x4 transform to the points.
-    pub fn transform(&mut self, transformation: &[[f64; 4]; 4]) -> Result<&mut Self> {
-        // SAFETY: 16 contiguous doubles.
-        check(unsafe { sys::o3d_lineset_transform(self.raw_mut(), mat4_ptr(transformation)) })?;
-        Ok(self)
-    }
-
     /// The points of `cloud0` then those of `cloud1`, and one line per correspondence
     /// `[index into cloud0, index into cloud1]` (range-checked).
     pub fn create_from_point_cloud_correspondences(
@@ -160,20 +132,6 @@ impl LineSet {
         let raw = obb.to_raw();
         // SAFETY: valid struct.
         new_lineset(|out| unsafe { sys::o3d_lineset_create_from_oriented_bounding_box(out, &raw) })
-    }
-
-    /// The 12 edges of the axis-aligned box `[min_bound, max_bound]`.
-    pub fn create_from_axis_aligned_bounding_box(min_bound: [f64; 3], max_bound: [f64; 3]) -> Result<LineSet> {
-        // SAFETY: 3 + 3 doubles.
-        new_lineset(|out| unsafe {
-            sys::o3d_lineset_create_from_axis_aligned_bounding_box(out, min_bound.as_ptr(), max_bound.as_ptr())
-        })
-    }
-
-    /// The mesh's unique edges (each once), on its vertices.
-    pub fn create_from_triangle_mesh(mesh: &TriangleMesh) -> Result<LineSet> {
-        // SAFETY: valid handle.
-        new_lineset(|out| unsafe { sys::o3d_lineset_create_from_triangle_mesh(out, mesh.as_raw()) })
     }
 }
 

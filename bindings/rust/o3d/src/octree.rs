@@ -8,6 +8,8 @@ use crate::error::{check, Result};
 use crate::pointcloud::PointCloud;
 use crate::util::{handle, to_i32};
 
+include!("generated/octree.rs");
+
 /// Where a node sits (o3d.geometry.OctreeNodeInfo).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct OctreeNodeInfo {
@@ -55,14 +57,6 @@ impl Octree {
         new_octree(|out| unsafe { sys::o3d_octree_create(out, depth) })
     }
 
-    /// Rebuild from `cloud`: the root is the cloud's bounding cube enlarged by `size_expand`
-    /// (a fraction >= 0; Open3D's default is 0.01), every point inserted.
-    pub fn convert_from_point_cloud(&mut self, cloud: &PointCloud, size_expand: f64) -> Result<&mut Self> {
-        // SAFETY: valid handles; `self` exclusively borrowed.
-        check(unsafe { sys::o3d_octree_convert_from_point_cloud(self.raw.as_ptr(), cloud.as_raw(), size_expand) })?;
-        Ok(self)
-    }
-
     /// The root cube's min corner.
     pub fn origin(&self) -> Result<[f64; 3]> {
         let mut v = [0.0; 3];
@@ -85,14 +79,6 @@ impl Octree {
         // SAFETY: one int; the other outputs are skipped.
         check(unsafe { sys::o3d_octree_get_root(ptr::null_mut(), ptr::null_mut(), &mut v, self.as_raw()) })?;
         Ok(v.max(0) as usize)
-    }
-
-    /// Number of non-empty leaves.
-    pub fn num_leaf_nodes(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_octree_num_leaf_nodes(&mut n, self.as_raw()) })?;
-        Ok(n)
     }
 
     /// The leaf containing `point`; `None` when the point is outside the root or in an empty cell.

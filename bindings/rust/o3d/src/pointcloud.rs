@@ -6,7 +6,7 @@ use o3d_sys as sys;
 
 use crate::array::{impl_arrays, Family};
 use crate::error::{check, Error, ErrorCode, Result};
-use crate::util::{copy_out, handle, init_struct, opt_ptr, to_i32};
+use crate::util::{copy_out, handle, init_struct, to_i32};
 
 include!("generated/pointcloud.rs");
 
@@ -198,14 +198,6 @@ impl PointCloud {
         Ok(pc)
     }
 
-    /// Number of points.
-    pub fn try_len(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_pointcloud_size(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
     /// Number of points. Panics if the library refuses (it only does for a NULL handle).
     pub fn len(&self) -> usize {
         or_panic(self.try_len(), "o3d_pointcloud_size")
@@ -219,12 +211,6 @@ impl PointCloud {
     /// True when the cloud has one covariance per point.
     pub fn has_covariances(&self) -> Result<bool> {
         ARRAYS.has(self, COVARIANCES)
-    }
-
-    /// Remove points, normals and colors.
-    pub fn clear(&mut self) -> Result<()> {
-        // SAFETY: valid handle, exclusively borrowed.
-        check(unsafe { sys::o3d_pointcloud_clear(self.raw_mut()) })
     }
 
     /// Replace the covariances (copied once; each must be symmetric).
@@ -251,58 +237,6 @@ impl PointCloud {
         Ok(self)
     }
 
-    /// Concatenate `other` onto `self` (Open3D `pcd += other`).
-    pub fn append(&mut self, other: &PointCloud) -> Result<()> {
-        // SAFETY: two valid handles; `self` is exclusive so they differ.
-        check(unsafe { sys::o3d_pointcloud_append(self.raw_mut(), other.as_raw()) })
-    }
-
-    /// Apply a row-major 4x4 transform to the points (and rotate the normals).
-    pub fn transform(&mut self, transformation: &[[f64; 4]; 4]) -> Result<&mut Self> {
-        // SAFETY: 16 contiguous doubles.
-        check(unsafe { sys::o3d_pointcloud_transform(self.raw_mut(), transformation.as_ptr().cast()) })?;
-        Ok(self)
-    }
-
-    /// Rotate by the row-major 3x3 `rotation` about `center` (`None`: the cloud's center).
-    pub fn rotate(&mut self, rotation: &[[f64; 3]; 3], center: Option<[f64; 3]>) -> Result<&mut Self> {
-        // SAFETY: 9 contiguous doubles; center NULL or 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_rotate(self.raw_mut(), rotation.as_ptr().cast(), opt_ptr(&center)) })?;
-        Ok(self)
-    }
-
-    /// Scale about `center` (`None`: the cloud's center).
-    pub fn scale(&mut self, scale: f64, center: Option<[f64; 3]>) -> Result<&mut Self> {
-        // SAFETY: center NULL or 3 doubles.
-        check(unsafe { sys::o3d_pointcloud_scale(self.raw_mut(), scale, opt_ptr(&center)) })?;
-        Ok(self)
-    }
-
-    fn vec3(
-        &self,
-        f: unsafe extern "C" fn(*mut f64, *const sys::o3d_pointcloud_t) -> sys::o3d_status,
-    ) -> Result<[f64; 3]> {
-        let mut out = [0.0; 3];
-        // SAFETY: room for 3 doubles.
-        check(unsafe { f(out.as_mut_ptr(), self.as_raw()) })?;
-        Ok(out)
-    }
-
-    /// Component-wise minimum of the points ((0,0,0) when empty).
-    pub fn get_min_bound(&self) -> Result<[f64; 3]> {
-        self.vec3(sys::o3d_pointcloud_get_min_bound)
-    }
-
-    /// Component-wise maximum of the points ((0,0,0) when empty).
-    pub fn get_max_bound(&self) -> Result<[f64; 3]> {
-        self.vec3(sys::o3d_pointcloud_get_max_bound)
-    }
-
-    /// Mean of the points ((0,0,0) when empty).
-    pub fn get_center(&self) -> Result<[f64; 3]> {
-        self.vec3(sys::o3d_pointcloud_get_center)
-    }
-
     /// Axis-aligned bounding box as (min corner, max corner).
     pub fn get_axis_aligned_bounding_box(&self) -> Result<([f64; 3], [f64; 3])> {
         let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
@@ -318,32 +252,6 @@ impl PointCloud {
         // SAFETY: indices.len() ints.
         new_cloud(|out| unsafe {
             sys::o3d_pointcloud_select_by_index(out, self.as_raw(), indices.as_ptr(), indices.len(), invert as i32)
-        })
-    }
-
-    /// Average points (normals, colors) per voxel of edge `voxel_size` > 0.
-    pub fn voxel_down_sample(&self, voxel_size: f64) -> Result<PointCloud> {
-        // SAFETY: valid handle.
-        new_cloud(|out| unsafe { sys::o3d_pointcloud_voxel_down_sample(out, self.as_raw(), voxel_size) })
-    }
-
-    /// Keep points 0, k, 2k, ... (`every_k_points` >= 1).
-    pub fn uniform_down_sample(&self, every_k_points: usize) -> Result<PointCloud> {
-        // SAFETY: valid handle.
-        new_cloud(|out| unsafe { sys::o3d_pointcloud_uniform_down_sample(out, self.as_raw(), every_k_points) })
-    }
-
-    /// Keep round(ratio * N) random points, in their original order; same seed → same output.
-    pub fn random_down_sample(&self, sampling_ratio: f64, seed: u64) -> Result<PointCloud> {
-        // SAFETY: valid handle.
-        new_cloud(|out| unsafe { sys::o3d_pointcloud_random_down_sample(out, self.as_raw(), sampling_ratio, seed) })
-    }
-
-    /// Farthest-point sampling of `num_samples` points, starting at `start_index`.
-    pub fn farthest_point_down_sample(&self, num_samples: usize, start_index: usize) -> Result<PointCloud> {
-        // SAFETY: valid handle.
-        new_cloud(|out| unsafe {
-            sys::o3d_pointcloud_farthest_point_down_sample(out, self.as_raw(), num_samples, start_index)
         })
     }
 
@@ -432,15 +340,6 @@ impl PointCloud {
             status
         })?;
         Ok((owned(cloud)?, kept))
-    }
-
-    /// New cloud with the points inside the box `[min_bound, max_bound]` (bounds included), or
-    /// the points outside it when `invert`.
-    pub fn crop_aabb(&self, min_bound: [f64; 3], max_bound: [f64; 3], invert: bool) -> Result<PointCloud> {
-        // SAFETY: valid handle; 3 + 3 doubles.
-        new_cloud(|out| unsafe {
-            sys::o3d_pointcloud_crop_aabb(out, self.as_raw(), min_bound.as_ptr(), max_bound.as_ptr(), invert as i32)
-        })
     }
 
     /// RANSAC plane fit: `(a, b, c, d)` with `a x + b y + c z + d = 0` and unit `(a, b, c)`, and

@@ -6,8 +6,8 @@ use std::fmt;
 use o3d_sys as sys;
 
 use crate::array::{impl_arrays, Family};
-use crate::error::{check, Result};
-use crate::image::{new_image, Image};
+use crate::error::Result;
+use crate::image::Image;
 use crate::util::{c_enum, handle};
 
 include!("generated/trianglemesh.rs");
@@ -56,28 +56,6 @@ impl TriangleMesh {
         mesh.set_vertices(vertices)?;
         mesh.set_triangles(triangles)?;
         Ok(mesh)
-    }
-
-    /// Remove all arrays and textures.
-    pub fn clear(&mut self) -> Result<()> {
-        // SAFETY: valid handle, exclusively borrowed.
-        check(unsafe { sys::o3d_trianglemesh_clear(self.raw_mut()) })
-    }
-
-    /// Number of vertices.
-    pub fn num_vertices(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_num_vertices(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
-    /// Number of triangles.
-    pub fn num_triangles(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_num_triangles(&mut n, self.as_raw()) })?;
-        Ok(n)
     }
 
     fn has(&self, which: i32) -> Result<bool> {
@@ -260,41 +238,9 @@ impl TriangleMesh {
 
     // ---- textures ----
 
-    /// Number of texture images.
-    pub fn texture_count(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_trianglemesh_texture_count(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
-    /// A copy of texture `index` (out of range → Err).
-    pub fn texture(&self, index: usize) -> Result<Image> {
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { sys::o3d_trianglemesh_get_texture(out, self.as_raw(), index) })
-    }
-
     /// Copies of every texture.
     pub fn textures(&self) -> Result<Vec<Image>> {
         (0..self.texture_count()?).map(|i| self.texture(i)).collect()
-    }
-
-    /// Append a copy of `image` to the textures.
-    pub fn add_texture(&mut self, image: &Image) -> Result<()> {
-        // SAFETY: valid handles.
-        check(unsafe { sys::o3d_trianglemesh_add_texture(self.raw_mut(), image.as_raw()) })
-    }
-
-    /// Remove all textures.
-    pub fn clear_textures(&mut self) -> Result<()> {
-        // SAFETY: valid handle.
-        check(unsafe { sys::o3d_trianglemesh_clear_textures(self.raw_mut()) })
-    }
-
-    /// Concatenate `other` (Open3D `mesh += other`), re-indexing its triangles.
-    pub fn append(&mut self, other: &TriangleMesh) -> Result<()> {
-        // SAFETY: two valid handles; `self` is exclusive so they differ.
-        check(unsafe { sys::o3d_trianglemesh_append(self.raw_mut(), other.as_raw()) })
     }
 }
 

@@ -3,7 +3,7 @@ use o3d_sys as sys;
 
 use crate::error::Result;
 use crate::trianglemesh::{new_mesh, TriangleMesh};
-use crate::util::{init_struct, opt_ptr, to_i32};
+use crate::util::{init_struct, to_i32};
 
 impl TriangleMesh {
     /// A twisted band about the z axis, a Moebius strip for odd `twists` (Open3D's `create_mobius`):
@@ -14,12 +14,6 @@ impl TriangleMesh {
         edit(&mut opts);
         // SAFETY: a valid options struct (its struct_size checked by the library).
         new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_mobius(out, &opts) })
-    }
-
-    /// Box `[0,width] x [0,height] x [0,depth]` (Open3D: 1, 1, 1).
-    pub fn create_box(width: f64, height: f64, depth: f64) -> Result<TriangleMesh> {
-        // SAFETY: out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_box(out, width, height, depth) })
     }
 
     /// UV sphere about the origin (Open3D: radius 1, resolution 20).
@@ -83,29 +77,5 @@ impl TriangleMesh {
                 ks,
             )
         })
-    }
-
-    /// Coloured axes of length `size` at `origin` (`None`: the origin).
-    pub fn create_coordinate_frame(size: f64, origin: Option<[f64; 3]>) -> Result<TriangleMesh> {
-        // SAFETY: out-pointer; origin NULL or 3 doubles.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_coordinate_frame(out, size, opt_ptr(&origin)) })
-    }
-
-    /// Regular tetrahedron inscribed in a sphere of `radius` (Open3D: 1).
-    pub fn create_tetrahedron(radius: f64) -> Result<TriangleMesh> {
-        // SAFETY: out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_tetrahedron(out, radius) })
-    }
-
-    /// Regular octahedron inscribed in a sphere of `radius`.
-    pub fn create_octahedron(radius: f64) -> Result<TriangleMesh> {
-        // SAFETY: out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_octahedron(out, radius) })
-    }
-
-    /// Regular icosahedron inscribed in a sphere of `radius`.
-    pub fn create_icosahedron(radius: f64) -> Result<TriangleMesh> {
-        // SAFETY: out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_icosahedron(out, radius) })
     }
 }

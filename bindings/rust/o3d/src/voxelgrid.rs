@@ -9,6 +9,8 @@ use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
 use crate::util::{copy_out, handle};
 
+include!("generated/voxelgrid.rs");
+
 /// One occupied cell (o3d.geometry.Voxel).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Voxel {
@@ -26,62 +28,6 @@ handle! {
 }
 
 impl VoxelGrid {
-    /// The cells holding at least one point; origin = the cloud's min bound - voxel_size / 2.
-    pub fn create_from_point_cloud(cloud: &PointCloud, voxel_size: f64) -> Result<VoxelGrid> {
-        // SAFETY: valid handle.
-        new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_point_cloud(out, cloud.as_raw(), voxel_size) })
-    }
-
-    /// As [`Self::create_from_point_cloud`], on the grid starting at `min_bound`; points outside
-    /// `[min_bound, max_bound]` are ignored.
-    pub fn create_from_point_cloud_within_bounds(
-        cloud: &PointCloud,
-        voxel_size: f64,
-        min_bound: [f64; 3],
-        max_bound: [f64; 3],
-    ) -> Result<VoxelGrid> {
-        // SAFETY: valid handle; 3 + 3 doubles.
-        new_grid(|out| unsafe {
-            sys::o3d_voxelgrid_create_from_point_cloud_within_bounds(
-                out,
-                cloud.as_raw(),
-                voxel_size,
-                min_bound.as_ptr(),
-                max_bound.as_ptr(),
-            )
-        })
-    }
-
-    /// The cells intersecting at least one triangle.
-    pub fn create_from_triangle_mesh(mesh: &TriangleMesh, voxel_size: f64) -> Result<VoxelGrid> {
-        // SAFETY: valid handle.
-        new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_triangle_mesh(out, mesh.as_raw(), voxel_size) })
-    }
-
-    /// Edge length of a cell.
-    pub fn voxel_size(&self) -> Result<f64> {
-        let mut v = 0.0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_voxelgrid_get_voxel_size(&mut v, self.as_raw()) })?;
-        Ok(v)
-    }
-
-    /// Corner of cell (0,0,0).
-    pub fn origin(&self) -> Result<[f64; 3]> {
-        let mut v = [0.0; 3];
-        // SAFETY: room for 3 doubles.
-        check(unsafe { sys::o3d_voxelgrid_get_origin(v.as_mut_ptr(), self.as_raw()) })?;
-        Ok(v)
-    }
-
-    /// Number of occupied cells.
-    pub fn num_voxels(&self) -> Result<usize> {
-        let mut n = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_voxelgrid_num_voxels(&mut n, self.as_raw()) })?;
-        Ok(n)
-    }
-
     /// True when the cells carry colors (the grid was made from a colored cloud or mesh).
     pub fn has_colors(&self) -> Result<bool> {
         has(sys::o3d_voxelgrid_has_array, self.as_raw(), sys::O3D_VOXELGRID_COLORS)
@@ -103,14 +49,6 @@ impl VoxelGrid {
             sys::o3d_voxelgrid_get_array(out.cast(), cap, n, self.as_raw(), sys::O3D_VOXELGRID_COLORS)
         })?;
         Ok(index.into_iter().zip(color).map(|(grid_index, color)| Voxel { grid_index, color }).collect())
-    }
-
-    /// Grid index of the cell containing `point` (occupied or not).
-    pub fn get_voxel(&self, point: [f64; 3]) -> Result<[i32; 3]> {
-        let mut out = [0i32; 3];
-        // SAFETY: 3 doubles in, room for 3 ints out.
-        check(unsafe { sys::o3d_voxelgrid_get_voxel(out.as_mut_ptr(), self.as_raw(), point.as_ptr()) })?;
-        Ok(out)
     }
 
     /// For each query point, whether its cell is occupied.

@@ -110,6 +110,13 @@ enum class RgbdFormat : int32_t {
     Nyu = O3D_RGBD_FORMAT_NYU,  ///< NYU raw PGM: byte-swapped disparity → metres, truncated at 7 m
 };
 
+/// @brief A coordinate axis (O3D_AXIS_*).
+enum class Axis : int32_t {
+    X = O3D_AXIS_X,  ///< x
+    Y = O3D_AXIS_Y,  ///< y
+    Z = O3D_AXIS_Z,  ///< z
+};
+
 /// @brief The arrays of a triangle mesh (O3D_MESH_*).
 enum class MeshArray : int32_t {
     Vertices = O3D_MESH_VERTICES,  ///< N x 3 float64

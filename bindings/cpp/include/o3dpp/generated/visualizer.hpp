@@ -2,10 +2,12 @@
 #pragma once
 /// @file generated/visualizer.hpp
 /// @brief The pass-through methods of o3dpp::Visualizer (o3d_visualizer_t), from their C declarations.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "o3d/o3d.h"
+#include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
 #include "o3dpp/visualization.hpp"
 
@@ -133,6 +135,7 @@ public:
 
 private:
     Self& self() { return static_cast<Self&>(*this); }
+    const Self& self() const { return static_cast<const Self&>(*this); }
 };
 
 }  // namespace detail

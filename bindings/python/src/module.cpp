@@ -11,6 +11,7 @@ void define_visualization(py::module_& m);
 // visualizer.cpp: the viewer (Visualizer and its variants, ViewControl).
 void declare_visualizer(py::module_& m);
 void define_visualizer(py::module_& m);
+void define_selection(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -52,4 +53,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_octree(m);
     o::define_visualization(m);
     o::define_visualizer(m);
+    o::define_selection(m);
 }

@@ -370,7 +370,8 @@ void def_key_callback(py::class_<PyVisKey, PyVis>& cls, const char* name, declty
 void declare_visualizer(py::module_& m) {
     py::class_<PyVis>(m, "Visualizer", "Open3D's legacy viewer: a window (or a hidden one) showing geometries.");
     py::class_<PyVisKey, PyVis>(m, "VisualizerWithKeyCallback", "A Visualizer with key callbacks.");
-    py::class_<PyVisEdit, PyVis>(m, "VisualizerWithEditing", "A Visualizer picking points (Shift + left click).");
+    py::class_<PyVisEdit, PyVis>(m, "VisualizerWithEditing",
+                                 "A Visualizer picking points (Shift + left click) and cropping (K, then C).");
     py::class_<PyViewControl>(m, "ViewControl", "The view of a Visualizer (vis.get_view_control()).");
 }
 
@@ -385,9 +386,31 @@ void define_visualizer(py::module_& m) {
     def_key_callback(key, "register_key_action_callback", &o3d_visualizer_register_key_action_callback, &on_key_action,
                      "callback_func(vis, action, mods) -> bool, on press (1), repeat (2) and release (0) of key.");
     static_cast<py::class_<PyVisEdit, PyVis>>(m.attr("VisualizerWithEditing"))
-        .def(py::init([](double, bool, const std::string&) { return std::make_unique<PyVisEdit>(); }),
+        .def(py::init([](double, bool, const std::string& directory) {
+                 auto v = std::make_unique<PyVisEdit>();
+                 check(o3d_visualizer_set_crop_directory(v->get(), directory.c_str()));
+                 return v;
+             }),
              py::arg("voxel_size") = -1.0, py::arg("use_dialog") = true, py::arg("directory") = "",
-             "The arguments are accepted for Open3D's signature and unused.")
+             "K locks the view for selecting (left drag: a rectangle; Ctrl + left clicks: a polygon), C crops the "
+             "first geometry to it; each crop is written to `directory` as cropped_<n>.ply when it is given. "
+             "voxel_size and use_dialog are accepted for Open3D's signature and unused (no file dialog).")
+        .def("get_cropped_geometry", [](PyVis& v) -> py::object {
+            o3d_pointcloud_t* cloud = nullptr;
+            o3d_trianglemesh_t* mesh = nullptr;
+            call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_get_cropped_pointcloud(&cloud, p); });
+            if (cloud) return py::cast(PyPointCloud(cloud));
+            call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_get_cropped_trianglemesh(&mesh, p); });
+            if (mesh) return py::cast(PyTriangleMesh(mesh));
+            return py::none();
+        }, "The last crop (a PointCloud or a TriangleMesh), or None before any.")
+        .def("crop_to_selection", [](PyVis& v) { call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_crop_to_selection(p); }); },
+             "Crop to the current selection now, as key C (o3d extra).")
+        .def("is_selecting", [](PyVis& v) {
+            o3d_bool out = 0;
+            call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_is_selecting(&out, p); });
+            return out != 0;
+        }, "Whether the view is locked for selecting (key K; o3d extra).")
         .def("get_picked_points", [](PyVis& v) {
             size_t n = 0;
             call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_get_picked_points(nullptr, 0, &n, p); });

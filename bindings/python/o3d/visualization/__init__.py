@@ -16,6 +16,7 @@ from .._o3d import (  # noqa: F401
     RenderOption,
 )
 from .._o3d import ViewControl, Visualizer, VisualizerWithEditing, VisualizerWithKeyCallback  # noqa: F401
+from .._o3d import SelectionPolygonVolume, read_selection_polygon_volume  # noqa: F401
 from . import rendering  # noqa: E402,F401
 from ._draw import (draw_geometries, draw_geometries_with_animation_callback,  # noqa: E402,F401
                     draw_geometries_with_custom_animation, draw_geometries_with_editing,
@@ -25,4 +26,4 @@ __all__ = ["RenderOption", "MeshShadeOption", "PointColorOption", "MeshColorOpti
            "draw_geometries", "render_geometries_png", "Visualizer", "VisualizerWithKeyCallback",
            "VisualizerWithEditing", "ViewControl", "draw_geometries_with_animation_callback",
            "draw_geometries_with_key_callbacks", "draw_geometries_with_custom_animation",
-           "draw_geometries_with_editing"]
+           "draw_geometries_with_editing", "SelectionPolygonVolume", "read_selection_polygon_volume"]

@@ -189,6 +189,10 @@ CPP_METHODS = {
         "create_from_point_cloud", "create_from_point_cloud_within_bounds", "create_from_triangle_mesh", "num_voxels",
         "get_voxel")},
     "o3d_voxelgrid_get_voxel_size": ("voxel_size", {}), "o3d_voxelgrid_get_origin": ("origin", {}),
+    **{f"o3d_selection_polygon_volume_{c}": (None, {}) for c in (
+        "read_json", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
+        "crop_point_cloud", "crop_triangle_mesh")},
+    **{f"o3d_visualizer_{c}": (None, {}) for c in ("is_selecting", "crop_to_selection", "set_crop_directory")},
 }
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
@@ -200,7 +204,9 @@ CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/v
                "o3d_lineset_t": ("LineSet", "lineset", "done", ["o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
                "o3d_image_t": ("Image", "image", "done", []),
                "o3d_voxelgrid_t": ("VoxelGrid", "voxelgrid", "done", [
-                   "o3dpp/pointcloud.hpp", "o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"])}
+                   "o3dpp/pointcloud.hpp", "o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
+               "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "selection", "done", [
+                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp"])}
 # C function -> Rust method name (None: the derived one).
 RUST_METHODS = {
     "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,
@@ -245,11 +251,17 @@ RUST_METHODS = {
     "o3d_voxelgrid_get_voxel_size": "voxel_size", "o3d_voxelgrid_get_origin": "origin",
     "o3d_camera_trajectory_size": "len", "o3d_camera_trajectory_clear": None, "o3d_kdtree_size": "len",
     "o3d_kdtree_dimension": None, "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
+    "o3d_selection_polygon_volume_create": "new",
+    **{f"o3d_selection_polygon_volume_{n}": None for n in (  # (read_json: by hand, its path is converted first)
+        "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
+        "crop_point_cloud", "crop_triangle_mesh")},
+    **{f"o3d_visualizer_{n}": None for n in ("is_selecting", "crop_to_selection", "set_crop_directory")},
 }
 # A handle -> the crate function that owns a new one a C call wrote (made by `handle!`).
 RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglemesh_t": "crate::trianglemesh::new_mesh",
               "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
-              "o3d_voxelgrid_t": "crate::voxelgrid::new_grid"}
+              "o3d_voxelgrid_t": "crate::voxelgrid::new_grid",
+              "o3d_selection_polygon_volume_t": "crate::selection::new_volume"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
@@ -262,7 +274,8 @@ RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False)
                 "o3d_voxelgrid_t": ("VoxelGrid", "&self", "self.as_raw()", False),
                 "o3d_camera_trajectory_t": ("CameraTrajectory", "&mut self", "self.raw_mut()", True),
                 "o3d_octree_t": ("Octree", "&mut self", "self.raw_mut()", True),
-                "o3d_kdtree_t": ("KDTreeFlann", "&self", "self.as_raw()", False)}
+                "o3d_kdtree_t": ("KDTreeFlann", "&self", "self.as_raw()", False),
+                "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "&mut self", "self.raw_mut()", False)}
 
 # Python: C function -> (Python class, name (None: the derived one), {C parameter: "keyword=default"}); a keyword
 # left out is the C name; a default is written in Python (True, None, 0.5, inf, (0.0, 0.0, 1.0)) or as a constant.

@@ -21,6 +21,7 @@
 #include "o3dpp/posegraph.hpp"
 #include "o3dpp/registration.hpp"
 #include "o3dpp/rgbd.hpp"
+#include "o3dpp/selection.hpp"
 #include "o3dpp/span.hpp"
 #include "o3dpp/trianglemesh.hpp"
 #include "o3dpp/visualization.hpp"

@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,6 +98,14 @@ public:
     }
     /// @brief Editing: vertex indices of the first geometry added, in pick order.
     std::vector<int32_t> picked_points() const { return copy_out<int32_t>(&o3d_visualizer_get_picked_points); }
+    /// @brief Editing: a copy of the last crop (key C) when it was of a point cloud, else nothing.
+    std::optional<PointCloud> cropped_point_cloud() const {
+        return cropped<PointCloud>(&o3d_visualizer_get_cropped_pointcloud);
+    }
+    /// @brief Editing: a copy of the last crop when it was of a triangle mesh, else nothing.
+    std::optional<TriangleMesh> cropped_triangle_mesh() const {
+        return cropped<TriangleMesh>(&o3d_visualizer_get_cropped_trianglemesh);
+    }
 
     // ---- ViewControl ----
     View view() {
@@ -134,6 +143,14 @@ public:
     }
 
 private:
+    // The C getter writes NULL when the last crop was of the other kind or nothing was cropped.
+    template <typename G, typename H>
+    std::optional<G> cropped(o3d_status (*fn)(H**, const o3d_visualizer_t*)) const {
+        H* out = nullptr;
+        check(fn(&out, get()));
+        if (!out) return std::nullopt;
+        return G(out);
+    }
     struct State;
     // A registered callback: shared, so that one replaced while it runs lives until it returns.
     template <typename F>

@@ -56,6 +56,7 @@ mod progress;
 pub mod registration;
 mod registration_global;
 mod rgbd;
+mod selection;
 mod trianglemesh;
 mod trianglemesh_ops;
 mod trianglemesh_primitives;

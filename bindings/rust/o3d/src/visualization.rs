@@ -26,6 +26,7 @@ use crate::trianglemesh::TriangleMesh;
 use crate::util::{c_enum, handle, mat4_ptr, options};
 use crate::voxelgrid::VoxelGrid;
 
+pub use crate::selection::{Axis, SelectionPolygonVolume};
 pub use crate::visualizer::{KeyAction, KeyCallback, MouseButton, View, Visualizer};
 
 include!("generated/visualization.rs");

@@ -37,7 +37,9 @@ use crate::camera::{PinholeCameraParameters, PinholeIntrinsic};
 use crate::error::{check, Result};
 use crate::image::{new_image, Image};
 use crate::io::{c_path, c_string, new_buffer};
+use crate::pointcloud::PointCloud;
 use crate::progress::with_progress;
+use crate::trianglemesh::TriangleMesh;
 use crate::util::{adopt, c_enum, copy_out, mat4_ptr};
 use crate::visualization::{Drawable, RenderOption};
 
@@ -129,6 +131,17 @@ unsafe fn invoke<F: ?Sized>(
     }
 }
 
+/// What a getter of the last crop writes: a new handle wrapped by `wrap`, or None where it writes NULL (the
+/// last crop was of the other kind, or nothing was cropped).
+fn cropped<H, T>(
+    f: impl FnOnce(*mut *mut H) -> sys::o3d_status,
+    wrap: impl FnOnce(NonNull<H>) -> T,
+) -> Result<Option<T>> {
+    let mut out = ptr::null_mut();
+    check(f(&mut out))?;
+    Ok(NonNull::new(out).map(wrap))
+}
+
 fn panic_text(payload: &(dyn Any + Send)) -> String {
     let text = payload.downcast_ref::<&str>().copied().or_else(|| payload.downcast_ref::<String>().map(String::as_str));
     format!("a visualizer callback panicked: {}", text.unwrap_or("(no message)"))
@@ -166,6 +179,10 @@ impl Visualizer {
     }
 
     fn raw(&self) -> *mut sys::o3d_visualizer_t {
+        self.raw.as_ptr()
+    }
+
+    fn as_raw(&self) -> *const sys::o3d_visualizer_t {
         self.raw.as_ptr()
     }
 
@@ -253,6 +270,24 @@ impl Visualizer {
         // SAFETY: `out` has room for `cap` indices or is NULL; valid handle.
         let picked = copy_out(|out, cap, n| unsafe { sys::o3d_visualizer_get_picked_points(out, cap, n, self.raw()) });
         Ok(picked?.into_iter().map(|i: i32| i as usize).collect())
+    }
+
+    /// get_cropped_geometry (editing): a copy of the last crop (key C) when it was of a point cloud.
+    pub fn cropped_point_cloud(&self) -> Result<Option<PointCloud>> {
+        // SAFETY: a valid handle; what it writes is a new cloud owned here.
+        cropped(
+            |out| unsafe { sys::o3d_visualizer_get_cropped_pointcloud(out, self.as_raw()) },
+            |raw| unsafe { PointCloud::from_raw(raw) },
+        )
+    }
+
+    /// get_cropped_geometry (editing): a copy of the last crop when it was of a triangle mesh.
+    pub fn cropped_triangle_mesh(&self) -> Result<Option<TriangleMesh>> {
+        // SAFETY: a valid handle; what it writes is a new mesh owned here.
+        cropped(
+            |out| unsafe { sys::o3d_visualizer_get_cropped_trianglemesh(out, self.as_raw()) },
+            |raw| unsafe { TriangleMesh::from_raw(raw) },
+        )
     }
 
     /// The view's front, lookat, up and zoom.

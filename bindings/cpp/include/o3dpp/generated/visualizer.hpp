@@ -102,6 +102,20 @@ public:
     Self& capture_depth_image(const std::string& path, double depth_scale = 1000.0) {
         return self().ran(o3d_visualizer_capture_depth_image(self().get(), path.c_str(), 1, depth_scale));
     }
+    /// @brief Whether the editing visualizer is selecting a region (key K locks the view for it: a left drag selects a rectangle, Ctrl + left clicks add polygon corners, C crops, K again leaves).
+    bool is_selecting() const {
+        int32_t out = 0;
+        check(o3d_visualizer_is_selecting(&out, self().get()));
+        return out != 0;
+    }
+    /// @brief VisualizerWithEditing's crop (key C): keep the part of the first geometry (a point cloud or a mesh: the triangles whose three vertices are kept) whose points project inside the selection, in front of the camera; show it in place of the whole, clear the picks and leave selecting. With a crop directory it is also written there as cropped_<n>.ply.
+    Self& crop_to_selection() {
+        return self().ran(o3d_visualizer_crop_to_selection(self().get()));
+    }
+    /// @brief Where crops are written as cropped_1.ply, cropped_2.ply, ... (Open3D's `directory` without its file dialog).
+    Self& set_crop_directory(const std::string& directory) {
+        return self().ran(o3d_visualizer_set_crop_directory(self().get(), directory.c_str()));
+    }
     /// @brief ViewControl.rotate: as a left-button drag of (x, y) pixels (0.003 rad per pixel).
     Self& rotate(double x, double y) {
         return self().ran(o3d_visualizer_view_rotate(self().get(), x, y));

@@ -14,3 +14,48 @@ c_enum! {
         Z = sys::O3D_AXIS_Z,
     }
 }
+
+impl SelectionPolygonVolume {
+    /// An empty volume: orthogonal axis Y, range `[0, 0]`, no polygon (set one before cropping).
+    pub fn new() -> Result<SelectionPolygonVolume> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::selection::new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_create(out) })
+    }
+    /// Set the orthogonal axis: the prism runs along it, the polygon lies across it.
+    pub fn set_orthogonal_axis(&mut self, axis: Axis) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_set_orthogonal_axis(self.raw_mut(), axis.raw()) })
+    }
+    /// SelectionPolygonVolume.axis_min: where the prism starts along the orthogonal axis.
+    pub fn get_axis_min(&self) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_get_axis_min(&mut out, self.as_raw()) }).map(|()| out)
+    }
+    /// Set axis_min (checked against axis_max when cropping, so the two may be set in either order).
+    pub fn set_axis_min(&mut self, value: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_set_axis_min(self.raw_mut(), value) })
+    }
+    /// SelectionPolygonVolume.axis_max: where the prism ends along the orthogonal axis.
+    pub fn get_axis_max(&self) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_get_axis_max(&mut out, self.as_raw()) }).map(|()| out)
+    }
+    /// Set axis_max (checked against axis_min when cropping).
+    pub fn set_axis_max(&mut self, value: f64) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_set_axis_max(self.raw_mut(), value) })
+    }
+    /// crop_point_cloud: the points inside, with their normals, colors and covariances.
+    pub fn crop_point_cloud(&self, pc: &PointCloud) -> Result<PointCloud> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::pointcloud::new_cloud(|out| unsafe { sys::o3d_selection_polygon_volume_crop_point_cloud(out, self.as_raw(), pc.as_raw()) })
+    }
+    /// crop_triangle_mesh: the triangles whose three vertices are inside, with the vertices they use.
+    pub fn crop_triangle_mesh(&self, mesh: &TriangleMesh) -> Result<TriangleMesh> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_selection_polygon_volume_crop_triangle_mesh(out, self.as_raw(), mesh.as_raw()) })
+    }
+}

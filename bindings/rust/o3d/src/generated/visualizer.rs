@@ -111,6 +111,22 @@ impl Visualizer {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_visualizer_capture_depth_image(self.raw(), c_path(path.as_ref())?.as_ptr(), 1, depth_scale) })
     }
+    /// Whether the editing visualizer is selecting a region (key K locks the view for it: a left drag selects a rectangle, Ctrl + left clicks add polygon corners, C crops, K again leaves).
+    pub fn is_selecting(&self) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_is_selecting(&mut out, self.as_raw()) }).map(|()| out != 0)
+    }
+    /// VisualizerWithEditing's crop (key C): keep the part of the first geometry (a point cloud or a mesh: the triangles whose three vertices are kept) whose points project inside the selection, in front of the camera; show it in place of the whole, clear the picks and leave selecting. With a crop directory it is also written there as cropped_<n>.ply.
+    pub fn crop_to_selection(&self) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_crop_to_selection(self.raw()) })
+    }
+    /// Where crops are written as cropped_1.ply, cropped_2.ply, ... (Open3D's `directory` without its file dialog).
+    pub fn set_crop_directory(&self, directory: &str) -> Result<()> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_visualizer_set_crop_directory(self.raw(), c_string("directory", directory)?.as_ptr()) })
+    }
     /// ViewControl.rotate: as a left-button drag of (x, y) pixels (0.003 rad per pixel).
     pub fn rotate(&self, x: f64, y: f64) -> Result<()> {
         // SAFETY: a valid handle; pointers to values that live for the call.

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "o3d/utility/error.h"
@@ -81,6 +82,40 @@ void append_flat_triangle(std::vector<Vertex>& out, const Eigen::Vector3d* p, co
     for (int k = 0; k < 3; ++k) out.push_back(vertex(p[k], n, c[k]));
 }
 
+/// @brief The vertices reordered along a Z-order curve over a 64^3 grid of `box` (a counting sort: linear time).
+/// Nearby points then follow each other, so a software rasterizer (llvmpipe) bins and shades them tile by
+/// tile with its caches warm: an unordered 1M-point cloud (e.g. after voxel down-sampling) draws about twice
+/// as fast. Only points at exactly the same depth on the same pixel can show differently (the first drawn wins).
+void order_spatially(std::vector<Vertex>& vertices, const SceneBox& box) {
+    constexpr int kBits = 6, kCells = 1 << kBits;
+    if (vertices.size() < 4096 || box.empty()) return;  // small clouds gain nothing
+    const Eigen::Array3d low = box.min_bound.array();
+    const double scale = kCells / box.max_extent();
+    auto spread = [](uint32_t v) {  // abcdef -> a00b00c00d00e00f
+        uint32_t out = 0;
+        for (int bit = 0; bit < kBits; ++bit) out |= ((v >> bit) & 1u) << (3 * bit);
+        return out;
+    };
+    uint32_t spread_of[kCells];
+    for (int i = 0; i < kCells; ++i) spread_of[i] = spread(uint32_t(i));
+    std::vector<uint32_t> keys(vertices.size());
+    std::vector<uint32_t> start(size_t(1) << (3 * kBits), 0);
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        uint32_t key = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const int cell = std::clamp(int((vertices[i].position[axis] - low[axis]) * scale), 0, kCells - 1);
+            key |= spread_of[cell] << axis;
+        }
+        keys[i] = key;
+        ++start[key];
+    }
+    uint32_t offset = 0;
+    for (uint32_t& n : start) offset += std::exchange(n, offset);
+    std::vector<Vertex> ordered(vertices.size());
+    for (size_t i = 0; i < vertices.size(); ++i) ordered[start[keys[i]]++] = vertices[i];
+    vertices.swap(ordered);
+}
+
 }  // namespace
 
 void VertexBuffer::release() {
@@ -114,6 +149,7 @@ GpuGeometry upload(const geometry::PointCloud& cloud, const Material& material) 
         vertices.push_back(vertex(cloud.points[i], g.has_normals ? cloud.normals[i] : zero,
                                   g.has_colors ? cloud.colors[i] : zero));
     }
+    order_spatially(vertices, g.box);
     g.main = make_buffer(vertices);
     if (g.has_normals) {
         std::vector<Vertex> doubled;

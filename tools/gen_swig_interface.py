@@ -68,6 +68,8 @@ CAPACITY = {
     "o3d_trianglemesh_compute_convex_hull": "o3dx_count(o3d_trianglemesh_num_vertices, mesh)",
     "o3d_voxelgrid_check_if_included": "xyz.n / 3",
     "o3d_visualizer_get_picked_points": "query",
+    "o3d_selection_polygon_volume_get_bounding_polygon": "query",
+    "o3d_selection_polygon_volume_crop_in_polygon": PC_SIZE.format("pc"),
 }
 # o3d_buffer_t outputs holding UTF-8 text: returned as a string (o3dx_text: copied once, then freed).
 TEXT = {"o3d_visualizer_get_view_status"}
@@ -75,7 +77,7 @@ TEXT = {"o3d_visualizer_get_view_status"}
 LENGTH = {"o3d_feature_create_from_data": "dimension * num", "o3d_kdtree_create_from_points_xd": "dimension * n"}
 PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_correspondence_set"}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
-ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2}
+ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
 SCALARS = {"size_t": "size_t", "int32_t": "int32_t", "double": "double", "int64_t": "int64_t", "uint64_t": "uint64_t"}
 ELEM = {"double": "f64", "float": "f32", "int32_t": "i32", "int64_t": "i64", "uint8_t": "u8"}
 

@@ -125,10 +125,10 @@ O3D_API o3d_status o3d_selection_polygon_volume_crop_point_cloud(o3d_pointcloud_
 
 O3D_API o3d_status o3d_selection_polygon_volume_crop_triangle_mesh(o3d_trianglemesh_t** out,
                                                                    const o3d_selection_polygon_volume_t* volume,
-                                                                   const o3d_trianglemesh_t* mesh) {
+                                                                   const o3d_trianglemesh_t* input) {
     return guard(__func__, [&] {
         require(out, "out");
         *out = nullptr;
-        *out = new o3d_trianglemesh{o3d::visualization::crop_triangle_mesh(of(volume), require(mesh, "mesh")->mesh)};
+        *out = new o3d_trianglemesh{o3d::visualization::crop_triangle_mesh(of(volume), require(input, "input")->mesh)};
     });
 }

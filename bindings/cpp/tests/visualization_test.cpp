@@ -3,7 +3,9 @@
 // [-0.5, 0.5]^2 x [2.5, 3.5] seen from the origin along +z with fx = fy = 100 and the principal point at
 // the image centre (79.5, 59.5) of a 160 x 120 image, so its front face (z = 2.5) covers the 40 x 40
 // pixels 60..99 x 40..79, and the depth along the axis there is 2.5.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "test_util.hpp"
@@ -241,6 +243,35 @@ TEST(Visualization, PointCloudLineSetAndVoxelGridOnTheAxis) {
     expect_rgb(pixel(img, CU, CV), {0, 0, 1}, "voxel");
     EXPECT_NEAR(count_not(img, kWhite), 1600, 0.02 * 1600);
     EXPECT_NEAR(depth_at(r.render_to_depth_image(true).to_values<float>(), CU, CV), 2.5, 1e-3);
+}
+
+// The renderer draws a large cloud in its own (spatial) order: the picture must not depend on the order the
+// points come in. Depths are distinct, so no two points tie on a pixel.
+TEST(Visualization, ACloudsPictureDoesNotDependOnItsPointOrder) {
+    std::vector<Vec3> points, colors;
+    std::uint32_t state = 12345;
+    auto uniform = [&] {  // a small LCG: the test needs no library's generator
+        state = state * 1664525u + 1013904223u;
+        return (state >> 8) / double(1 << 24);
+    };
+    for (int i = 0; i < 20000; ++i) {
+        points.push_back({uniform() - 0.5, uniform() - 0.5, 2.5 + 1e-5 * i});
+        colors.push_back({uniform(), uniform(), uniform()});
+    }
+    std::vector<Vec3> points_rev(points.rbegin(), points.rend()), colors_rev(colors.rbegin(), colors.rend());
+    const RenderMaterial unlit(Shader::DefaultUnlit);
+    auto render = [&](const std::vector<Vec3>& p, const std::vector<Vec3>& c) {
+        PointCloud cloud(p);
+        cloud.set_colors(c);
+        OffscreenRenderer r = pinhole_renderer();
+        r.add("cloud", cloud, unlit);
+        return r.render_to_image();
+    };
+    const Image forward = render(points, colors), backward = render(points_rev, colors_rev);
+    EXPECT_GT(count_not(forward, kWhite), 1600);  // the cloud covers the 40 x 40 pixels of the square, and more
+    const auto a = forward.data(), b = backward.data();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin()));
 }
 
 TEST(Visualization, FovAndLookatCamerasLookAtTheBox) {

@@ -165,13 +165,13 @@ O3D_API o3d_status o3d_selection_polygon_volume_crop_point_cloud(o3d_pointcloud_
  * Ownership: `*out` belongs to the caller (o3d_trianglemesh_destroy); left NULL on failure.
  * @param out receives the new mesh
  * @param volume the volume
- * @param mesh the mesh
+ * @param input the mesh
  * @return O3D_OK; O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a volume that cannot crop or a triangle
  *   index out of range.
  */
 O3D_API o3d_status o3d_selection_polygon_volume_crop_triangle_mesh(o3d_trianglemesh_t** out,
                                                                    const o3d_selection_polygon_volume_t* volume,
-                                                                   const o3d_trianglemesh_t* mesh);
+                                                                   const o3d_trianglemesh_t* input);
 
 O3D_END_DECL
 

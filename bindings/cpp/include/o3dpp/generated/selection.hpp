@@ -52,8 +52,8 @@ public:
         return PointCloud::adopt([&](auto** out) { return o3d_selection_polygon_volume_crop_point_cloud(out, self().get(), pc.get()); });
     }
     /// @brief crop_triangle_mesh: the triangles whose three vertices are inside, with the vertices they use.
-    TriangleMesh crop_triangle_mesh(const TriangleMesh& mesh) const {
-        return TriangleMesh::adopt([&](auto** out) { return o3d_selection_polygon_volume_crop_triangle_mesh(out, self().get(), mesh.get()); });
+    TriangleMesh crop_triangle_mesh(const TriangleMesh& input) const {
+        return TriangleMesh::adopt([&](auto** out) { return o3d_selection_polygon_volume_crop_triangle_mesh(out, self().get(), input.get()); });
     }
 
 private:

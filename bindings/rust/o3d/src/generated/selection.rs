@@ -54,8 +54,8 @@ impl SelectionPolygonVolume {
         crate::pointcloud::new_cloud(|out| unsafe { sys::o3d_selection_polygon_volume_crop_point_cloud(out, self.as_raw(), pc.as_raw()) })
     }
     /// crop_triangle_mesh: the triangles whose three vertices are inside, with the vertices they use.
-    pub fn crop_triangle_mesh(&self, mesh: &TriangleMesh) -> Result<TriangleMesh> {
+    pub fn crop_triangle_mesh(&self, input: &TriangleMesh) -> Result<TriangleMesh> {
         // SAFETY: a valid handle; pointers to values that live for the call.
-        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_selection_polygon_volume_crop_triangle_mesh(out, self.as_raw(), mesh.as_raw()) })
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_selection_polygon_volume_crop_triangle_mesh(out, self.as_raw(), input.as_raw()) })
     }
 }

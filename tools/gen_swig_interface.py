@@ -76,6 +76,8 @@ TEXT = {"o3d_visualizer_get_view_status"}
 # Array inputs whose length two other inputs give.
 LENGTH = {"o3d_feature_create_from_data": "dimension * num", "o3d_kdtree_create_from_points_xd": "dimension * n"}
 PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_correspondence_set"}
+# Values per row of a copy-out array whose count is in rows (default 1; PAIRS: 2).
+OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
 ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
 SCALARS = {"size_t": "size_t", "int32_t": "int32_t", "double": "double", "int64_t": "int64_t", "uint64_t": "uint64_t"}
@@ -233,7 +235,7 @@ class Gen:
                 lines.append(f"o3dx_out_{ELEM[base]} {field} = {{0, 0, 1}};")
         if group:
             arrays, counts = group
-            width = 2 if f["name"] in PAIRS else 1
+            width = OUT_WIDTH.get(f["name"], 2 if f["name"] in PAIRS else 1)
             cap = CAPACITY.get(f["name"])
             if verb in ("get_array", "get_index_array"):
                 lines.append(f"size_t rows_ = 0, cols_ = 0;")
@@ -262,7 +264,8 @@ class Gen:
         body.append(f"O3DX_CHECK({f['name']}({', '.join(args)}));")
         if group:
             arrays, counts = group
-            width = "cols_" if verb in ("get_array", "get_index_array") else (2 if f["name"] in PAIRS else 1)
+            width = ("cols_" if verb in ("get_array", "get_index_array")
+                     else OUT_WIDTH.get(f["name"], 2 if f["name"] in PAIRS else 1))
             for k, a in enumerate(arrays):
                 field = self.field_name(a["name"], a["type"].rstrip("*"))
                 cnt = counts[0] if k == 0 else counts[-1]

@@ -298,6 +298,7 @@ static partial class Test
         CameraRgbdTests(); // CameraRgbdTest.cs
         VisualizationTests(); // VisualizationTest.cs
         VisualizerTests(); // VisualizerTest.cs
+        SelectionTests(); // SelectionTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

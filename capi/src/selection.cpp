@@ -22,7 +22,10 @@ Volume& of(o3d_selection_polygon_volume_t* v) { return require(v, "volume")->vol
 }  // namespace
 
 O3D_API o3d_status o3d_selection_polygon_volume_create(o3d_selection_polygon_volume_t** out) {
-    return guard(__func__, [&] { *require(out, "out") = new o3d_selection_polygon_volume(); });
+    return guard(__func__, [&] {
+        require(out, "out");  // first: in `*require(out) = new ...` the allocation would come before the check
+        *out = new o3d_selection_polygon_volume();
+    });
 }
 
 O3D_API void o3d_selection_polygon_volume_destroy(o3d_selection_polygon_volume_t* volume) { delete volume; }

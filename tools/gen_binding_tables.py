@@ -83,7 +83,8 @@ RUST_MODULES = {  # default: the header's name (common.h -> lib)
 RUST_SUBSETS = {"o3d_mesh_array": (("O3D_MESH_VERTICES", "O3D_MESH_VERTEX_NORMALS", "O3D_MESH_VERTEX_COLORS",
                                     "O3D_MESH_TRIANGLE_NORMALS"), "the float64 ones with three values per row")}
 RUST_DEFAULTS = {"o3d_render_backend": "O3D_RENDER_BACKEND_AUTO", "o3d_image_convert": "O3D_IMAGE_CONVERT_WEIGHTED",
-                 "o3d_filter_scope": "O3D_FILTER_SCOPE_ALL", "o3d_simplification_contraction": "O3D_SIMPLIFICATION_AVERAGE"}
+                 "o3d_filter_scope": "O3D_FILTER_SCOPE_ALL", "o3d_simplification_contraction": "O3D_SIMPLIFICATION_AVERAGE",
+                 "o3d_odometry_jacobian": "O3D_ODOMETRY_JACOBIAN_COLOR_TERM"}
 RUST_ORDERED = {"o3d_log_level"}
 RUST_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", ("kernel", "kernel_k"))}
 

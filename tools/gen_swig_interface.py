@@ -80,6 +80,8 @@ PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_corre
 OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
 ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
+# int32 outputs that are flags (besides an `_is_` / `has_` function's).
+BOOL_OUTS = {"out_found", "out_open", "out_success"}
 SCALARS = {"size_t": "size_t", "int32_t": "int32_t", "double": "double", "int64_t": "int64_t", "uint64_t": "uint64_t"}
 ELEM = {"double": "f64", "float": "f32", "int32_t": "i32", "int64_t": "i64", "uint8_t": "u8"}
 
@@ -203,7 +205,7 @@ class Gen:
             elif p["array"]:
                 results.append((field, f"o3dx_out_{ELEM[base]}", "fixed", p, base))
             else:
-                kind = "bool" if base == "int32_t" and re.search(r"(^|_)(is|has)_", verb) or n in ("out_found", "out_open") else "scalar"
+                kind = "bool" if base == "int32_t" and re.search(r"(^|_)(is|has)_", verb) or n in BOOL_OUTS else "scalar"
                 results.append((field, "bool" if kind == "bool" else base, kind, p, base))
         if group:
             arrays, counts = group

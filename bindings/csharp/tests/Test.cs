@@ -299,6 +299,7 @@ static partial class Test
         VisualizationTests(); // VisualizationTest.cs
         VisualizerTests(); // VisualizerTest.cs
         SelectionTests(); // SelectionTest.cs
+        OdometryTests(); // OdometryTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

@@ -12,6 +12,7 @@ void define_visualization(py::module_& m);
 void declare_visualizer(py::module_& m);
 void define_visualizer(py::module_& m);
 void define_selection(py::module_& m);
+void define_odometry(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -54,4 +55,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_visualization(m);
     o::define_visualizer(m);
     o::define_selection(m);
+    o::define_odometry(m);
 }

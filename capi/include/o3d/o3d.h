@@ -25,5 +25,6 @@
 #include "o3d/visualization.h"
 #include "o3d/visualizer.h"
 #include "o3d/selection.h"
+#include "o3d/odometry.h"
 
 #endif /* O3D_O3D_H */

@@ -1,4 +1,5 @@
-"""o3d.pipelines: registration (ICP); odometry and integration are placeholders."""
+"""o3d.pipelines: registration (ICP, global registration, pose graphs), odometry (RGB-D); integration is a
+placeholder."""
 from . import registration  # noqa: F401
 from . import odometry  # noqa: F401
 from . import integration  # noqa: F401

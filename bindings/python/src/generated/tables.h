@@ -172,6 +172,17 @@ struct Fields<o3d_search_param_t> {
     }
 };
 
+/// o3d_odometry_options_t (odometry.h): OdometryOption's scalars; the iterations per pyramid level are a parameter of o3d_odometry_compute_rgbd.
+template <>
+struct Fields<o3d_odometry_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("depth_diff_max", &o3d_odometry_options_t::depth_diff_max, As<double>{}, "Metres (> 0): two pixels whose depths differ more do not correspond; default 0.03.");
+        f("depth_min", &o3d_odometry_options_t::depth_min, As<double>{}, "Metres: depth below is ignored; default 0.0.");
+        f("depth_max", &o3d_odometry_options_t::depth_max, As<double>{}, "Metres: depth above is ignored; default 4.0.");
+    }
+};
+
 /// o3d_depth_to_cloud_options_t (pointcloud.h): PointCloud.create_from_depth_image keyword arguments.
 template <>
 struct Fields<o3d_depth_to_cloud_options_t> {

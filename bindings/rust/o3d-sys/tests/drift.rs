@@ -166,6 +166,7 @@ fn every_header_struct_has_the_same_fields_in_order() {
             "o3d_mobius_options",
             "o3d_obb",
             "o3d_octree_node_info",
+            "o3d_odometry_options",
             "o3d_pinhole_intrinsic",
             "o3d_pose_graph_edge",
             "o3d_ransac_options",

@@ -291,6 +291,11 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_octree_node_info_t, size)", offset_of!(o3d_octree_node_info_t, size), 24),
         ("offsetof(o3d_octree_node_info_t, depth)", offset_of!(o3d_octree_node_info_t, depth), 32),
         ("offsetof(o3d_octree_node_info_t, child_index)", offset_of!(o3d_octree_node_info_t, child_index), 36),
+        ("sizeof(o3d_odometry_options_t)", size_of::<o3d_odometry_options_t>(), 32),
+        ("_Alignof(o3d_odometry_options_t)", align_of::<o3d_odometry_options_t>(), 8),
+        ("offsetof(o3d_odometry_options_t, depth_diff_max)", offset_of!(o3d_odometry_options_t, depth_diff_max), 8),
+        ("offsetof(o3d_odometry_options_t, depth_min)", offset_of!(o3d_odometry_options_t, depth_min), 16),
+        ("offsetof(o3d_odometry_options_t, depth_max)", offset_of!(o3d_odometry_options_t, depth_max), 24),
         // Callback pointers are plain (nullable) function pointers.
         ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
         ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
@@ -497,6 +502,12 @@ fn rgbd_and_depth_options_init_accept_rust_sizes_and_fill_defaults() {
         assert_eq!(st, O3D_OK, "{}", last_message());
         assert_eq!(d.struct_size as usize, size_of::<o3d_depth_to_cloud_options_t>());
         assert_eq!((d.depth_scale, d.depth_trunc, d.stride, d.project_valid_depth_only), (1000.0, 1000.0, 1, 1));
+
+        let mut o: o3d_odometry_options_t = std::mem::zeroed();
+        let st = o3d_odometry_options_init(&mut o, size_of::<o3d_odometry_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(o.struct_size as usize, size_of::<o3d_odometry_options_t>());
+        assert_eq!((o.depth_diff_max, o.depth_min, o.depth_max), (0.03, 0.0, 4.0));
     }
 }
 

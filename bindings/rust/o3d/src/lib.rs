@@ -49,6 +49,7 @@ mod io_geometry;
 mod kdtree;
 mod lineset;
 mod octree;
+pub mod odometry;
 mod panic;
 mod pointcloud;
 mod posegraph;

@@ -62,6 +62,12 @@ enum class LineSetArray : int32_t {
     Lines = O3D_LINESET_LINES,  ///< M x 2 int32 point indices
 };
 
+/// @brief The error terms odometry minimizes (O3D_ODOMETRY_JACOBIAN_*).
+enum class OdometryJacobian : int32_t {
+    ColorTerm = O3D_ODOMETRY_JACOBIAN_COLOR_TERM,  ///< intensity only (RGBDOdometryJacobianFromColorTerm)
+    HybridTerm = O3D_ODOMETRY_JACOBIAN_HYBRID_TERM,  ///< intensity and depth (RGBDOdometryJacobianFromHybridTerm)
+};
+
 /// @brief The arrays of a point cloud (O3D_POINTCLOUD_*).
 enum class PointCloudArray : int32_t {
     Points = O3D_POINTCLOUD_POINTS,  ///< N x 3 float64

@@ -110,6 +110,25 @@ using SearchParamBase = COptions<SearchParam, detail::SearchParamFields, o3d_sea
 }  // namespace detail
 
 namespace detail {
+/// @brief The fields of o3d_odometry_options_t (odometry.h).
+struct OdometryOptionsFields {
+    double depth_diff_max;  ///< metres (> 0): two pixels whose depths differ more do not correspond; default 0.03
+    double depth_min;  ///< metres: depth below is ignored; default 0.0
+    double depth_max;  ///< metres: depth above is ignored; default 4.0
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.depth_diff_max, c.depth_diff_max);
+        f(s.depth_min, c.depth_min);
+        f(s.depth_max, c.depth_max);
+    }
+};
+}  // namespace detail
+
+/// @brief OdometryOption's scalars; the iterations per pyramid level are a parameter of o3d_odometry_compute_rgbd. Defaults from o3d_odometry_options_init.
+struct OdometryOptions : COptions<OdometryOptions, detail::OdometryOptionsFields, o3d_odometry_options_t, &o3d_odometry_options_init> {};
+
+namespace detail {
 /// @brief The fields of o3d_depth_to_cloud_options_t (pointcloud.h).
 struct DepthToCloudOptionsFields {
     double depth_scale;  ///< raw units per metre for uint16 depth; default 1000

@@ -233,7 +233,9 @@ RUST_METHODS = {
         "get_volume", "is_watertight", "is_edge_manifold", "is_vertex_manifold", "is_self_intersecting",
         "is_orientable", "euler_poincare_characteristic", "sample_points_uniformly", "sample_points_poisson_disk",
         "simplify_vertex_clustering", "simplify_quadric_decimation", "crop_aabb", "create_box",
-        "create_coordinate_frame", "create_tetrahedron", "create_octahedron", "create_icosahedron")},
+        "create_coordinate_frame", "create_tetrahedron", "create_octahedron", "create_icosahedron", "create_sphere",
+        "create_cylinder", "create_cone", "create_torus", "create_arrow", "filter_smooth_simple",
+        "filter_smooth_laplacian", "filter_smooth_taubin", "subdivide_midpoint", "subdivide_loop")},
     "o3d_trianglemesh_get_texture": "texture",
     **{f"o3d_pointcloud_{n}": None for n in (
         "clear", "append", "transform", "rotate", "scale", "get_min_bound", "get_max_bound", "get_center",
@@ -251,18 +253,22 @@ RUST_METHODS = {
         "get_voxel")},
     "o3d_voxelgrid_get_voxel_size": "voxel_size", "o3d_voxelgrid_get_origin": "origin",
     "o3d_camera_trajectory_size": "len", "o3d_camera_trajectory_clear": None, "o3d_kdtree_size": "len",
-    "o3d_kdtree_dimension": None, "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
+    "o3d_kdtree_dimension": None, "o3d_octree_create": "new", "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
     "o3d_selection_polygon_volume_create": "new",
     **{f"o3d_selection_polygon_volume_{n}": None for n in (  # (read_json: by hand, its path is converted first)
         "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{n}": None for n in ("is_selecting", "crop_to_selection", "set_crop_directory")},
 }
+# int32_t parameters Rust takes as usize (counts of iterations, segments), converted by crate::util::to_i32: a value
+# over i32::MAX is an InvalidArgument error naming the parameter.
+RUST_USIZE = {"number_of_iterations", "resolution", "split", "radial_resolution", "tubular_resolution",
+              "cylinder_split", "cone_split", "max_depth"}
 # A handle -> the crate function that owns a new one a C call wrote (made by `handle!`).
 RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglemesh_t": "crate::trianglemesh::new_mesh",
               "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
               "o3d_voxelgrid_t": "crate::voxelgrid::new_grid",
-              "o3d_selection_polygon_volume_t": "crate::selection::new_volume"}
+              "o3d_selection_polygon_volume_t": "crate::selection::new_volume", "o3d_octree_t": "crate::octree::new_octree"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
@@ -332,15 +338,20 @@ PY_METHODS = {
         "vertical_fov_deg": "vertical_field_of_view"}),
     "o3d_offscreen_renderer_setup_camera_lookat": ("OffscreenRenderer", None, {"zoom": "=0.7"}),
     "o3d_offscreen_renderer_render_to_png": ("OffscreenRenderer", None, {"path": "filename"}),
+    "o3d_image_create": ("Image", None, {"num_channels": "num_of_channels=1", "bytes_per_channel": "=1"}),
+    **{f"o3d_image_{c}": ("Image", None, {}) for c in ("filter", "downsample", "flip_vertical", "flip_horizontal")},
+    "o3d_image_create_float_image": ("Image", None, {"convert_type": "conversion_type=O3D_IMAGE_CONVERT_WEIGHTED"}),
+    "o3d_image_convert_depth_to_float": ("Image", "convert_depth_to_float_image", {"depth_scale": "=1000.0",
+                                                                                   "depth_trunc": "=3.0"}),
     "o3d_offscreen_renderer_has_geometry": ("Open3DScene", None, {}),
     "o3d_offscreen_renderer_remove_geometry": ("Open3DScene", None, {}),
     "o3d_offscreen_renderer_clear_geometries": ("Open3DScene", "clear_geometry", {}),
 }
 # Python class -> (handle, whether a method that changes the object returns it, as Open3D's geometries do).
 PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_trianglemesh_t", True),
-              "LineSet": ("o3d_lineset_t", True), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
+              "LineSet": ("o3d_lineset_t", True), "Image": ("o3d_image_t", False), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
               "Open3DScene": ("o3d_offscreen_renderer_t", False)}
-PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh"}  # the extension's classes
+PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage"}  # the extension's classes
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
 # changing methods that return None in Open3D.
 PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",
@@ -915,9 +926,17 @@ def rust_param(p, groups):
         return f"[f64; {p['array']}]", f"{n}.as_ptr()"
     if k == "optional_array":
         return f"Option<[f64; {p['array']}]>", f"crate::util::opt_ptr(&{n})"
+    if k == "int32_t" and n in RUST_USIZE:  # converted before the call (rust_conversions)
+        return "usize", n
     return {"int32_t": ("i32", n), "double": ("f64", n), "bool": ("bool", f"i32::from({n})"), "size": ("usize", n),
             "seed": ("u64", n), "string": ("&str", f'c_string("{n}", {n})?.as_ptr()'),
             "path": ("impl AsRef<Path>", f"c_path({n}.as_ref())?.as_ptr()"), "fixed": (None, binding_methods.FIXED.get(n))}[k]
+
+
+def rust_conversions(m):
+    """The statements run before the call: each usize taken for an int32_t, converted (shadowing it)."""
+    return [f'        let {p["name"]} = crate::util::to_i32({p["name"]}, "{p["name"]}")?;' for p in m.params
+            if p["kind"] == "int32_t" and p["name"] in RUST_USIZE]
 
 
 def gen_rust_methods(model, groups, handle):
@@ -938,7 +957,8 @@ def gen_rust_methods(model, groups, handle):
         if m.new:  # a new object, owned through its type's adopting constructor
             new_ty = type_name(m.new, HANDLE_TYPES)
             call = f"sys::{m.c}(" + ", ".join(["out"] + me + args) + ")"
-            out += [f"    pub fn {name}({sig}) -> Result<{new_ty}> {{",
+            out += ["    #[allow(clippy::too_many_arguments)]"] if len(recv + params) > 7 else []
+            out += [f"    pub fn {name}({sig}) -> Result<{new_ty}> {{"] + rust_conversions(m) + [
                     "        // SAFETY: a valid handle; pointers to values that live for the call.",
                     f"        {RUST_ADOPT[m.new]}(|out| unsafe {{ {call} }})", "    }"]
             continue
@@ -949,7 +969,7 @@ def gen_rust_methods(model, groups, handle):
                             "double": ("f64", "0.0", "out"), "array": (f"[{elem}; {n}]", f"[{zero}; {n}]", "out")}[m.out_kind]
         outs = ["out.as_mut_ptr()" if m.out_kind == "array" else "&mut out"] if m.out else []
         call = f"sys::{m.c}(" + ", ".join(outs + me + args) + ")"
-        out.append(f"    pub fn {name}({sig}) -> Result<{ret}> {{")
+        out += [f"    pub fn {name}({sig}) -> Result<{ret}> {{"] + rust_conversions(m)
         if init:
             out.append(f"        let mut out = {init};")
         out += ["        // SAFETY: a valid handle; pointers to values that live for the call.",

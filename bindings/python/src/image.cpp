@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // o3d.geometry.Image over o3d_image_t (image.h). np.asarray(image) is a zero-copy view through the
 // buffer protocol: its base keeps the Image (and so the C handle) alive, and no C call resizes an image.
-#include "geometry_types.h"
+#include "generated/image_methods.h"
 
 namespace o3dpy {
 namespace {
@@ -29,15 +29,6 @@ const o3d_image_t* require(const PyImage& img, const char* what) {
     return img.get();
 }
 
-template <typename F>
-PyImage derive(const PyImage& self, const char* what, F&& f) {
-    const o3d_image_t* src = require(self, what);
-    ImagePtr keep = self.h;
-    o3d_image_t* out = nullptr;
-    check(nogil([&] { return f(&out, src); }));
-    return PyImage(out);
-}
-
 py::buffer_info buffer_of(PyImage& self) {
     const Format f = format_of(self);
     std::vector<py::ssize_t> shape{f.height, f.width};
@@ -59,16 +50,6 @@ py::buffer_info buffer_of(PyImage& self) {
         }
     }
     return py::buffer_info(data, item, buffer_format(f.bytes), (py::ssize_t)shape.size(), shape, strides, self.readonly);
-}
-
-PyImage filtered(const PyImage& self, ImageFilterType type) {
-    return derive(self, "filter", [&](o3d_image_t** out, const o3d_image_t* img) {
-        return o3d_image_filter(out, img, (int32_t)type);
-    });
-}
-
-PyImage downsampled(const PyImage& self) {
-    return derive(self, "downsample", [](o3d_image_t** out, const o3d_image_t* img) { return o3d_image_downsample(out, img); });
 }
 
 PyImage clone_image(const PyImage& self) {
@@ -114,6 +95,7 @@ void declare_image(py::module_& m) {
 
 void define_image(py::module_& m) {
     auto cls = static_cast<py::class_<PyImage>>(m.attr("Image"));
+    def_image_methods(cls);  // create, filter, downsample, flip_*, create_float_image, convert_depth_to_float_image
     cls.attr("FilterType") = m.attr("ImageFilterType");
     cls.attr("ColorToIntensityConversionType") = m.attr("ColorToIntensityConversionType");
     cls.def(py::init([]() { return PyImage(nullptr); }), "An empty image.")
@@ -121,16 +103,6 @@ void define_image(py::module_& m) {
              py::arg("image"), "Deep copy.")
         .def(py::init([](py::handle array) { return image_from_array(array); }), py::arg("data"),
              "Copy of an (H, W) or (H, W, C) uint8 / uint16 / float32 array (C in 1, 3, 4).")
-        .def_static(
-            "create",
-            [](int32_t width, int32_t height, int32_t num_of_channels, int32_t bytes_per_channel) {
-                o3d_image_t* out = nullptr;
-                check(o3d_image_create(&out, width, height, num_of_channels, bytes_per_channel));
-                return PyImage(out);
-            },
-            py::arg("width"), py::arg("height"), py::arg("num_of_channels") = 1, py::arg("bytes_per_channel") = 1,
-            "A zero-filled image (o3d only; Open3D's C++ Image::Prepare): channels 1, 3 or 4, bytes per "
-            "channel 1 (uint8), 2 (uint16) or 4 (float32).")
         .def_buffer(&buffer_of)
         .def("__copy__", &clone_image)
         .def("__deepcopy__", [](const PyImage& self, py::handle) { return clone_image(self); })
@@ -161,8 +133,6 @@ void define_image(py::module_& m) {
                  return "Image of size " + std::to_string(f.width) + "x" + std::to_string(f.height) + ", with " +
                         std::to_string(f.channels) + " channels.\nUse numpy.asarray to access buffer data.";
              })
-        .def("filter", &filtered, py::arg("filter_type"),
-             "Filtered copy of a 1-channel float32 image (others raise: convert with create_float_image).")
         .def(
             "create_pyramid",
             [](const PyImage& self, int64_t num_of_levels, bool with_gaussian_filter) {
@@ -174,12 +144,11 @@ void define_image(py::module_& m) {
                 // filtered when asked) downsampled by 2.
                 py::list out;
                 if (num_of_levels == 0) return out;
-                out.append(py::cast(derive(self, "create_pyramid",
-                                           [](o3d_image_t** o, const o3d_image_t* img) { return o3d_image_clone(o, img); })));
-                for (int64_t i = 1; i < num_of_levels; ++i) {
-                    const PyImage& prev = out[(size_t)(i - 1)].cast<const PyImage&>();
-                    out.append(py::cast(with_gaussian_filter ? downsampled(filtered(prev, ImageFilterType::Gaussian3))
-                                                             : downsampled(prev)));
+                out.append(py::cast(clone_image(self)));
+                for (int64_t i = 1; i < num_of_levels; ++i) {  // the generated filter and downsample
+                    py::object prev = out[(size_t)(i - 1)];
+                    out.append((with_gaussian_filter ? prev.attr("filter")(ImageFilterType::Gaussian3) : prev)
+                                   .attr("downsample")());
                 }
                 return out;
             },
@@ -189,39 +158,10 @@ void define_image(py::module_& m) {
             "filter_pyramid",
             [](py::iterable image_pyramid, ImageFilterType filter_type) {
                 py::list out;
-                for (py::handle level : image_pyramid) out.append(py::cast(filtered(level.cast<const PyImage&>(), filter_type)));
+                for (py::handle level : image_pyramid) out.append(py::cast(level.cast<PyImage>()).attr("filter")(filter_type));
                 return out;
             },
             py::arg("image_pyramid"), py::arg("filter_type"), "Each level filtered.")
-        .def("downsample", &downsampled, "Half-size 1-channel float32 image, each pixel the mean of a 2x2 block.")
-        .def("flip_vertical",
-             [](const PyImage& self) {
-                 return derive(self, "flip_vertical",
-                               [](o3d_image_t** out, const o3d_image_t* img) { return o3d_image_flip_vertical(out, img); });
-             })
-        .def("flip_horizontal",
-             [](const PyImage& self) {
-                 return derive(self, "flip_horizontal",
-                               [](o3d_image_t** out, const o3d_image_t* img) { return o3d_image_flip_horizontal(out, img); });
-             })
-        .def(
-            "create_float_image",
-            [](const PyImage& self, ColorToIntensityConversionType type) {
-                return derive(self, "create_float_image", [&](o3d_image_t** out, const o3d_image_t* img) {
-                    return o3d_image_create_float_image(out, img, (int32_t)type);
-                });
-            },
-            py::arg("conversion_type") = ColorToIntensityConversionType::Weighted,
-            "1-channel float32 copy (8-bit values / 255; color averaged by conversion_type).")
-        .def(
-            "convert_depth_to_float_image",
-            [](const PyImage& self, double depth_scale, double depth_trunc) {
-                return derive(self, "convert_depth_to_float_image", [&](o3d_image_t** out, const o3d_image_t* img) {
-                    return o3d_image_convert_depth_to_float(out, img, depth_scale, depth_trunc);
-                });
-            },
-            py::arg("depth_scale") = 1000.0, py::arg("depth_trunc") = 3.0,
-            "Depth in metres: raw depth / depth_scale, values beyond depth_trunc set to 0 (float32).")
         .def(
             "_data_copy",
             [](const PyImage& self) {

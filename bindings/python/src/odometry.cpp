@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // o3d.pipelines.odometry over odometry.h: OdometryOption, the two Jacobian classes and compute_rgbd_odometry,
 // under Open3D's names. The call releases the GIL.
-#include <cstring>
-
 #include "registration_types.h"
 
 namespace o3dpy {
@@ -32,13 +30,6 @@ std::vector<int32_t> as_iterations(py::handle levels) {
     for (py::handle n : py::iter(levels)) out.push_back(int32_of(py::cast<int64_t>(n), "iteration_number_per_pyramid_level"));
     if (out.empty()) invalid("iteration_number_per_pyramid_level is empty");
     return out;
-}
-
-template <size_t R, size_t C>
-py::array_t<double> matrix(const double* values) {
-    py::array_t<double> a(std::vector<py::ssize_t>{py::ssize_t(R), py::ssize_t(C)});
-    std::memcpy(a.mutable_data(), values, R * C * sizeof(double));
-    return a;
 }
 
 }  // namespace
@@ -88,7 +79,8 @@ void define_odometry(py::module_& m) {
            const Jacobian& jacobian, const OdometryOption& option) {
             const std::array<double, 16> init = mat4_or_identity(odo_init, "odo_init");
             o3d_bool success = 0;
-            double t[16], info[36];
+            py::array_t<double> t(std::vector<py::ssize_t>{4, 4}), info(std::vector<py::ssize_t>{6, 6});
+            double *tp = t.mutable_data(), *ip = info.mutable_data();  // taken with the GIL held
             RgbdPtr a = source.h, b = target.h;
             o3d_status s;
             {
@@ -96,11 +88,11 @@ void define_odometry(py::module_& m) {
                 SharedLocks locks;
                 locks.add(a->mutex);
                 locks.add(b->mutex);
-                s = o3d_odometry_compute_rgbd(&success, t, info, a->p, b->p, &intrinsic.v, init.data(), jacobian.kind,
+                s = o3d_odometry_compute_rgbd(&success, tp, ip, a->p, b->p, &intrinsic.v, init.data(), jacobian.kind,
                                               option.iterations.data(), option.iterations.size(), &option.o);
             }
             check(s);
-            return py::make_tuple(success != 0, matrix<4, 4>(t), matrix<6, 6>(info));
+            return py::make_tuple(success != 0, t, info);
         },
         py::arg("source"), py::arg("target"), py::arg("pinhole_camera_intrinsic"), py::arg("odo_init") = py::none(),
         py::arg("jacobian") = ColorTerm(), py::arg("option") = OdometryOption(),

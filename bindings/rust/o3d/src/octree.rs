@@ -6,7 +6,7 @@ use o3d_sys as sys;
 
 use crate::error::{check, Result};
 use crate::pointcloud::PointCloud;
-use crate::util::{handle, to_i32};
+use crate::util::handle;
 
 include!("generated/octree.rs");
 
@@ -50,13 +50,6 @@ handle! {
 }
 
 impl Octree {
-    /// A new empty octree of depth `max_depth` (>= 1).
-    pub fn new(max_depth: usize) -> Result<Octree> {
-        let depth = to_i32(max_depth, "max_depth")?;
-        // SAFETY: out-pointer.
-        new_octree(|out| unsafe { sys::o3d_octree_create(out, depth) })
-    }
-
     /// The root cube's min corner.
     pub fn origin(&self) -> Result<[f64; 3]> {
         let mut v = [0.0; 3];

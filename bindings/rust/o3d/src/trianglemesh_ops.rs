@@ -5,8 +5,8 @@ use o3d_sys as sys;
 use crate::error::{check, Result};
 use crate::image::Image;
 use crate::pointcloud::PointCloud;
-use crate::trianglemesh::{new_mesh, TriangleMesh};
-use crate::util::{c_enum, to_i32};
+use crate::trianglemesh::TriangleMesh;
+use crate::util::c_enum;
 
 include!("generated/trianglemesh_ops.rs");
 
@@ -57,50 +57,5 @@ impl TriangleMesh {
         out.cluster_n_triangles.truncate(n_clusters.min(cap));
         out.cluster_area.truncate(n_clusters.min(cap));
         Ok(out)
-    }
-
-    /// Average of each vertex and its neighbours, `iterations` times.
-    pub fn filter_smooth_simple(&self, iterations: usize, scope: FilterScope) -> Result<TriangleMesh> {
-        let n = to_i32(iterations, "number_of_iterations")?;
-        // SAFETY: valid handle and out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_filter_smooth_simple(out, self.as_raw(), n, scope.raw()) })
-    }
-
-    /// Laplacian smoothing (Open3D default lambda 0.5).
-    pub fn filter_smooth_laplacian(&self, iterations: usize, lambda: f64, scope: FilterScope) -> Result<TriangleMesh> {
-        let n = to_i32(iterations, "number_of_iterations")?;
-        // SAFETY: valid handle and out-pointer.
-        new_mesh(|out| unsafe {
-            sys::o3d_trianglemesh_filter_smooth_laplacian(out, self.as_raw(), n, lambda, scope.raw())
-        })
-    }
-
-    /// Taubin smoothing (Open3D defaults lambda 0.5, mu -0.53).
-    pub fn filter_smooth_taubin(
-        &self,
-        iterations: usize,
-        lambda: f64,
-        mu: f64,
-        scope: FilterScope,
-    ) -> Result<TriangleMesh> {
-        let n = to_i32(iterations, "number_of_iterations")?;
-        // SAFETY: valid handle and out-pointer.
-        new_mesh(|out| unsafe {
-            sys::o3d_trianglemesh_filter_smooth_taubin(out, self.as_raw(), n, lambda, mu, scope.raw())
-        })
-    }
-
-    /// Split every triangle into four at its edge midpoints, `iterations` times.
-    pub fn subdivide_midpoint(&self, iterations: usize) -> Result<TriangleMesh> {
-        let n = to_i32(iterations, "number_of_iterations")?;
-        // SAFETY: valid handle and out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_subdivide_midpoint(out, self.as_raw(), n) })
-    }
-
-    /// Loop subdivision, `iterations` times.
-    pub fn subdivide_loop(&self, iterations: usize) -> Result<TriangleMesh> {
-        let n = to_i32(iterations, "number_of_iterations")?;
-        // SAFETY: valid handle and out-pointer.
-        new_mesh(|out| unsafe { sys::o3d_trianglemesh_subdivide_loop(out, self.as_raw(), n) })
     }
 }

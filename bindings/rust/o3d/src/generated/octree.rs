@@ -3,6 +3,12 @@
 // from capi/include/o3d/*.h.
 
 impl Octree {
+    /// New empty octree of `max_depth` >= 1 (Open3D: Octree(max_depth)).
+    pub fn new(max_depth: usize) -> Result<Octree> {
+        let max_depth = crate::util::to_i32(max_depth, "max_depth")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::octree::new_octree(|out| unsafe { sys::o3d_octree_create(out, max_depth) })
+    }
     /// Rebuild from a cloud: the root cube is the cloud's bounding cube enlarged by `size_expand` (a fraction >= 0, Open3D default 0.01), every point inserted.
     pub fn convert_from_point_cloud(&mut self, pc: &PointCloud, size_expand: f64) -> Result<&mut Self> {
         // SAFETY: a valid handle; pointers to values that live for the call.

@@ -248,6 +248,36 @@ impl TriangleMesh {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_simplify_quadric_decimation(out, self.as_raw(), target_number_of_triangles, maximum_error, boundary_weight) })
     }
+    /// Average of each vertex and its neighbours, `number_of_iterations` times.
+    pub fn filter_smooth_simple(&self, number_of_iterations: usize, filter_scope: FilterScope) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_filter_smooth_simple(out, self.as_raw(), number_of_iterations, filter_scope.raw()) })
+    }
+    /// Laplacian smoothing v += lambda * (weighted mean of neighbours - v), neighbours weighted by inverse distance as in Open3D (default lambda 0.5).
+    pub fn filter_smooth_laplacian(&self, number_of_iterations: usize, lambda_filter: f64, filter_scope: FilterScope) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_filter_smooth_laplacian(out, self.as_raw(), number_of_iterations, lambda_filter, filter_scope.raw()) })
+    }
+    /// Taubin smoothing: alternating Laplacian steps with lambda and mu (defaults 0.5, -0.53).
+    pub fn filter_smooth_taubin(&self, number_of_iterations: usize, lambda_filter: f64, mu: f64, filter_scope: FilterScope) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_filter_smooth_taubin(out, self.as_raw(), number_of_iterations, lambda_filter, mu, filter_scope.raw()) })
+    }
+    /// Split every triangle into four at its edge midpoints, `number_of_iterations` times.
+    pub fn subdivide_midpoint(&self, number_of_iterations: usize) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_subdivide_midpoint(out, self.as_raw(), number_of_iterations) })
+    }
+    /// Loop subdivision (Loop 1987), `number_of_iterations` times.
+    pub fn subdivide_loop(&self, number_of_iterations: usize) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_subdivide_loop(out, self.as_raw(), number_of_iterations) })
+    }
     /// Triangles whose three vertices lie in `[min_bound, max_bound]` (unused vertices dropped).
     pub fn crop_aabb(&self, min_bound: [f64; 3], max_bound: [f64; 3]) -> Result<TriangleMesh> {
         // SAFETY: a valid handle; pointers to values that live for the call.
@@ -257,6 +287,41 @@ impl TriangleMesh {
     pub fn create_box(width: f64, height: f64, depth: f64) -> Result<TriangleMesh> {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_box(out, width, height, depth) })
+    }
+    /// UV sphere about the origin (defaults radius 1, resolution 20).
+    pub fn create_sphere(radius: f64, resolution: usize) -> Result<TriangleMesh> {
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_sphere(out, radius, resolution) })
+    }
+    /// Cylinder along z centred at the origin (defaults 1, 2, resolution 20, split 4).
+    pub fn create_cylinder(radius: f64, height: f64, resolution: usize, split: usize) -> Result<TriangleMesh> {
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        let split = crate::util::to_i32(split, "split")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_cylinder(out, radius, height, resolution, split) })
+    }
+    /// Cone along z with its base at z = 0 (defaults 1, 2, resolution 20, split 1).
+    pub fn create_cone(radius: f64, height: f64, resolution: usize, split: usize) -> Result<TriangleMesh> {
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        let split = crate::util::to_i32(split, "split")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_cone(out, radius, height, resolution, split) })
+    }
+    /// Torus about z (defaults 1, 0.5, radial 30, tubular 20).
+    pub fn create_torus(torus_radius: f64, tube_radius: f64, radial_resolution: usize, tubular_resolution: usize) -> Result<TriangleMesh> {
+        let radial_resolution = crate::util::to_i32(radial_resolution, "radial_resolution")?;
+        let tubular_resolution = crate::util::to_i32(tubular_resolution, "tubular_resolution")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_torus(out, torus_radius, tube_radius, radial_resolution, tubular_resolution) })
+    }
+    /// Arrow along z: a cylinder then a cone (defaults 1, 1.5, 5, 4, 20, 4, 1).
+    pub fn create_arrow(cylinder_radius: f64, cone_radius: f64, cylinder_height: f64, cone_height: f64, resolution: usize, cylinder_split: usize, cone_split: usize) -> Result<TriangleMesh> {
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        let cylinder_split = crate::util::to_i32(cylinder_split, "cylinder_split")?;
+        let cone_split = crate::util::to_i32(cone_split, "cone_split")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_arrow(out, cylinder_radius, cone_radius, cylinder_height, cone_height, resolution, cylinder_split, cone_split) })
     }
     /// Coloured axes (x red, y green, z blue) of length `size` at `origin` (None: 0,0,0).
     pub fn create_coordinate_frame(size: f64, origin: Option<[f64; 3]>) -> Result<TriangleMesh> {

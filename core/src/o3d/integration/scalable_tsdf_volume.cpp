@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "o3d/integration/scalable_tsdf_volume.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "o3d/utility/error.h"
+
+namespace o3d::integration {
+namespace {
+
+int checked_unit_resolution(int resolution) {
+    if (resolution < 2 || resolution > 256)
+        throw InvalidArgument("ScalableTSDFVolume: volume_unit_resolution must be in [2, 256], got " +
+                              std::to_string(resolution));
+    return resolution;
+}
+
+bool key_less(const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+}
+
+}  // namespace
+
+ScalableTSDFVolume::ScalableTSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type,
+                                       int volume_unit_resolution, int depth_sampling_stride)
+    : TSDFVolume(voxel_length, sdf_trunc, color_type, checked_unit_resolution(volume_unit_resolution),
+                 Eigen::Vector3d::Zero()),
+      depth_sampling_stride_(depth_sampling_stride) {
+    if (depth_sampling_stride < 1) throw InvalidArgument("ScalableTSDFVolume: depth_sampling_stride must be >= 1");
+}
+
+void ScalableTSDFVolume::integrate(const geometry::RGBDImage& image,
+                                   const camera::PinholeCameraIntrinsic& intrinsic,
+                                   const Eigen::Matrix4d& extrinsic) {
+    check_frame(image, intrinsic, extrinsic);
+    const Eigen::Matrix4d camera_to_world = extrinsic.inverse();
+    if (!camera_to_world.allFinite()) throw InvalidArgument("integrate: the extrinsic is not invertible");
+    const double unit_length = voxel_length_ * double(blocks_.side());
+    const geometry::Image& depth = image.depth;
+    std::vector<Eigen::Vector3i> keys;
+    Eigen::Vector3i last_lo(1, 1, 1), last_hi(0, 0, 0);  // the previous sample's box, to skip repeats
+    for (int v = 0; v < depth.height; v += depth_sampling_stride_) {
+        for (int u = 0; u < depth.width; u += depth_sampling_stride_) {
+            const float d = *depth.pixel<float>(u, v);
+            if (!(d > 0.0f) || !std::isfinite(d)) continue;
+            const Eigen::Vector4d camera_point((u - intrinsic.cx) * d / intrinsic.fx,
+                                               (v - intrinsic.cy) * d / intrinsic.fy, d, 1.0);
+            const Eigen::Vector3d p = (camera_to_world * camera_point).head<3>();
+            const Eigen::Vector3d lo_f = ((p.array() - sdf_trunc_) / unit_length).floor();
+            const Eigen::Vector3d hi_f = ((p.array() + sdf_trunc_) / unit_length).floor();
+            if (!(lo_f.array().abs() < 1e6).all() || !(hi_f.array().abs() < 1e6).all()) continue;
+            const Eigen::Vector3i lo = lo_f.cast<int>(), hi = hi_f.cast<int>();
+            if (lo == last_lo && hi == last_hi) continue;
+            last_lo = lo;
+            last_hi = hi;
+            for (int x = lo.x(); x <= hi.x(); ++x)
+                for (int y = lo.y(); y <= hi.y(); ++y)
+                    for (int z = lo.z(); z <= hi.z(); ++z) {
+                        const Eigen::Vector3i key(x, y, z);
+                        if (detail::BlockMap::key_in_range(key)) keys.push_back(key);
+                    }
+        }
+    }
+    std::sort(keys.begin(), keys.end(), key_less);
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    integrate_into(image, intrinsic, extrinsic, keys);
+}
+
+}  // namespace o3d::integration

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "o3d/integration/tsdf_volume.h"
+
+#include <cmath>
+#include <string>
+
+#include "o3d/integration/frame_integration.h"
+#include "o3d/utility/error.h"
+#include "o3d/utility/parallel.h"
+
+namespace o3d::integration {
+namespace {
+
+bool same_intrinsic(const camera::PinholeCameraIntrinsic& a, const camera::PinholeCameraIntrinsic& b) {
+    return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy && a.cx == b.cx &&
+           a.cy == b.cy;
+}
+
+std::string format_of(const geometry::Image& image) {
+    return std::to_string(image.num_channels) + " channel(s) of " + std::to_string(image.bytes_per_channel) +
+           " byte(s), " + std::to_string(image.width) + " x " + std::to_string(image.height);
+}
+
+}  // namespace
+
+TSDFVolume::TSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type, int block_side,
+                       const Eigen::Vector3d& origin)
+    : voxel_length_(voxel_length),
+      sdf_trunc_(sdf_trunc),
+      color_type_(color_type),
+      blocks_(block_side, voxel_length, origin, color_type != ColorType::None) {
+    if (!(voxel_length > 0) || !std::isfinite(voxel_length))
+        throw InvalidArgument("TSDF volume: voxel_length must be a finite number > 0");
+    if (!(sdf_trunc > 0) || !std::isfinite(sdf_trunc))
+        throw InvalidArgument("TSDF volume: sdf_trunc must be a finite number > 0");
+    if (color_type != ColorType::None && color_type != ColorType::RGB8 && color_type != ColorType::Gray32)
+        throw InvalidArgument("TSDF volume: unknown color_type");
+    if (!origin.allFinite()) throw InvalidArgument("TSDF volume: origin must be finite");
+}
+
+void TSDFVolume::check_frame(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
+                             const Eigen::Matrix4d& extrinsic) const {
+    if (intrinsic.width <= 0 || intrinsic.height <= 0 || !(intrinsic.fx > 0) || !(intrinsic.fy > 0) ||
+        !std::isfinite(intrinsic.fx) || !std::isfinite(intrinsic.fy) || !std::isfinite(intrinsic.cx) ||
+        !std::isfinite(intrinsic.cy))
+        throw InvalidArgument("integrate: the intrinsic needs a size and finite fx, fy > 0");
+    if (!extrinsic.allFinite()) throw InvalidArgument("integrate: the extrinsic has a NaN or infinite entry");
+    const geometry::Image& depth = image.depth;
+    if (depth.empty() || depth.num_channels != 1 || depth.bytes_per_channel != 4)
+        throw InvalidArgument("integrate: depth must be a 1-channel float image in metres, got " + format_of(depth) +
+                              " (make the RGBDImage with create_from_color_and_depth)");
+    if (depth.width != intrinsic.width || depth.height != intrinsic.height)
+        throw InvalidArgument("integrate: depth is " + format_of(depth) + " but the intrinsic is " +
+                              std::to_string(intrinsic.width) + " x " + std::to_string(intrinsic.height));
+    if (color_type_ == ColorType::None) return;
+    const geometry::Image& color = image.color;
+    const bool rgb8 = color_type_ == ColorType::RGB8;
+    if (color.empty() || color.num_channels != (rgb8 ? 3 : 1) || color.bytes_per_channel != (rgb8 ? 1 : 4))
+        throw InvalidArgument(std::string("integrate: a ") + (rgb8 ? "RGB8" : "Gray32") + " volume needs " +
+                              (rgb8 ? "3-channel uint8 color (convert_rgb_to_intensity=False)"
+                                    : "1-channel float intensity (convert_rgb_to_intensity=True)") +
+                              ", got " + format_of(color));
+    if (color.width != depth.width || color.height != depth.height)
+        throw InvalidArgument("integrate: color is " + format_of(color) + " but depth is " + format_of(depth));
+}
+
+void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
+                                const Eigen::Matrix4d& extrinsic, const std::vector<Eigen::Vector3i>& keys) {
+    check_frame(image, intrinsic, extrinsic);
+    if (!same_intrinsic(intrinsic, multiplier_intrinsic_) || distance_multiplier_.empty()) {
+        distance_multiplier_.resize(size_t(intrinsic.width) * size_t(intrinsic.height));
+        for (int v = 0; v < intrinsic.height; ++v) {
+            for (int u = 0; u < intrinsic.width; ++u) {
+                const double x = (u - intrinsic.cx) / intrinsic.fx, y = (v - intrinsic.cy) / intrinsic.fy;
+                distance_multiplier_[size_t(v) * size_t(intrinsic.width) + size_t(u)] =
+                    float(std::sqrt(1.0 + x * x + y * y));
+            }
+        }
+        multiplier_intrinsic_ = intrinsic;
+    }
+    detail::FrameView frame;
+    frame.width = intrinsic.width;
+    frame.height = intrinsic.height;
+    frame.fx = float(intrinsic.fx);
+    frame.fy = float(intrinsic.fy);
+    frame.cx = float(intrinsic.cx);
+    frame.cy = float(intrinsic.cy);
+    frame.depth = reinterpret_cast<const float*>(image.depth.data.data());
+    frame.distance_multiplier = distance_multiplier_.data();
+    if (color_type_ == ColorType::RGB8) frame.rgb = image.color.data.data();
+    if (color_type_ == ColorType::Gray32) frame.intensity = reinterpret_cast<const float*>(image.color.data.data());
+    frame.rotation = extrinsic.topLeftCorner<3, 3>().cast<float>();
+    frame.translation = extrinsic.topRightCorner<3, 1>().cast<float>();
+    frame.sdf_trunc = float(sdf_trunc_);
+
+    std::vector<detail::VoxelBlock*> targets;
+    targets.reserve(keys.size());
+    for (const Eigen::Vector3i& key : keys) targets.push_back(&blocks_.find_or_create(key));
+    const int threads = utility::resolve_num_threads();
+    const int side = blocks_.side();
+    if (targets.size() == 1) {  // the uniform volume: share its one block out by x slabs
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
+        for (int x = 0; x < side; ++x) detail::integrate_block(*targets[0], blocks_, frame, x, x + 1);
+        return;
+    }
+    // Blocks are independent; dynamic scheduling because blocks outside the view cost little.
+#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
+    for (long i = 0; i < long(targets.size()); ++i)
+        detail::integrate_block(*targets[size_t(i)], blocks_, frame, 0, side);
+}
+
+}  // namespace o3d::integration

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file tsdf_volume.h
+/// @brief Truncated signed distance volumes (Curless & Levoy 1996) as Open3D's legacy integration module
+/// keeps them: depth frames averaged into voxels, the surface extracted by marching cubes.
+#include <Eigen/Core>
+
+#include "o3d/camera/pinhole_camera.h"
+#include "o3d/geometry/point_cloud.h"
+#include "o3d/geometry/rgbd_image.h"
+#include "o3d/geometry/triangle_mesh.h"
+#include "o3d/integration/voxel_block.h"
+
+namespace o3d::integration {
+
+/// @brief What colour each voxel keeps (Open3D's TSDFVolumeColorType): none, the frame's RGB8 colour, or
+/// its float intensity (Gray32, kept as a grey colour).
+enum class ColorType { None = 0, RGB8 = 1, Gray32 = 2 };
+
+/// @brief What both volumes share: parameters, the voxel blocks, integration of one frame into chosen
+/// blocks, and extraction. The frames are Open3D's integration input: depth 1-channel float metres
+/// (RGBDImage from create_from_color_and_depth), colour 3-channel uint8 for RGB8, 1-channel float for Gray32.
+class TSDFVolume {
+public:
+    virtual ~TSDFVolume() = default;
+    double voxel_length() const { return voxel_length_; }
+    double sdf_trunc() const { return sdf_trunc_; }
+    ColorType color_type() const { return color_type_; }
+
+    /// @brief Forget every frame.
+    virtual void reset() = 0;
+    /// @brief Fuse one frame seen by `intrinsic` from `extrinsic` (world to camera).
+    /// @throws InvalidArgument on image formats the colour type cannot use, sizes other than the intrinsic's,
+    /// an intrinsic with fx, fy <= 0, or a non-finite extrinsic. Nothing is changed then.
+    virtual void integrate(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
+                           const Eigen::Matrix4d& extrinsic) = 0;
+
+    /// @brief Marching cubes over every cube of 8 observed voxels: vertices on the zero crossings (with the
+    /// interpolated colour unless the type is None), one per crossed edge, triangles wound toward free space.
+    geometry::TriangleMesh extract_triangle_mesh() const;
+    /// @brief The zero crossings between neighbouring observed voxels (|tsdf| < 0.98 on both), with normals
+    /// from the tsdf's gradient and colours.
+    geometry::PointCloud extract_point_cloud() const;
+
+protected:
+    TSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type, int block_side,
+               const Eigen::Vector3d& origin);
+    /// @brief Checks the frame, then fuses it into the blocks at `keys` (created when absent).
+    void integrate_into(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
+                        const Eigen::Matrix4d& extrinsic, const std::vector<Eigen::Vector3i>& keys);
+    /// @brief The checks integrate_into makes first; throws InvalidArgument.
+    void check_frame(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
+                     const Eigen::Matrix4d& extrinsic) const;
+
+    double voxel_length_;
+    double sdf_trunc_;
+    ColorType color_type_;
+    detail::BlockMap blocks_;
+    // Open3D's depth-to-camera-distance multiplier image, kept for the intrinsic it was made for.
+    camera::PinholeCameraIntrinsic multiplier_intrinsic_;
+    std::vector<float> distance_multiplier_;
+};
+
+}  // namespace o3d::integration

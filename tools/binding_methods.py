@@ -5,7 +5,7 @@ The shapes, by the C declaration (outputs first, docs/conventions.md), each retu
   method       the class's handle first (`const` when the call only reads it), then plain parameters;
   with a value one output before the handle: a scalar (int32_t*, int64_t*, size_t*, double*) or a fixed array
                (`double out[3]`, `int32_t out[3]`), the method's value; an int32_t* typed o3d_bool* or documented
-               "receives 1 (true) or 0 (false)" is a bool;
+               "receives 1 (true) or 0 (false)" is a bool; one typed as a constant group's typedef is that enum;
   deriving     a new handle `o3d_<x>_t** out` before the handle: the method returns a new object of x's class;
   constructor  a new handle of the class and no handle of it after: a static function returning a new object.
 
@@ -59,7 +59,9 @@ class Method:
             params.pop(0)
         self.params = [dict(p, kind=kind(p, groups, handles, self.brief)) for p in params]
         o = self.out
-        self.out_kind = None if o is None else "array" if o["array"] else "bool" if is_flag(o) else _VALUE_OUTS[o["type"]]
+        self.out_kind = None if o is None else "array" if o["array"] else "bool" if is_flag(o) else \
+            "enum" if o.get("typedef") in groups else _VALUE_OUTS[o["type"]]
+        self.out_group = groups[o["typedef"]] if self.out_kind == "enum" else None  # the enum an "enum" out is
 
     def default_name(self, handle):
         """o3d_visualizer_view_get_field_of_view -> field_of_view: without the handle's prefix, `view_`, `view_get_`."""

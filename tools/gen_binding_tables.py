@@ -59,8 +59,9 @@ VARIANTS = {  # every language
     "O3D_INTRINSIC_PRIMESENSE_DEFAULT": "PrimeSenseDefault", "O3D_COLOR_OPTION_X": "XCoordinate",
     "O3D_COLOR_OPTION_Y": "YCoordinate", "O3D_COLOR_OPTION_Z": "ZCoordinate", "O3D_KERNEL_GM": "GM",
 }
-CPP_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_robust_kernel": "RobustKernelType"}
-CPP_VARIANTS = {"O3D_VOXELGRID_GRID_INDEX": "GridIndices"}
+CPP_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_robust_kernel": "RobustKernelType",
+             "o3d_tsdf_volume_color_type": "TSDFVolumeColorType"}
+CPP_VARIANTS = {"O3D_VOXELGRID_GRID_INDEX": "GridIndices", "O3D_TSDF_VOLUME_COLOR_TYPE_RGB8": "RGB8"}
 # C++ structs written by hand on the generated detail::<Name>Base (extra constructors, methods).
 CPP_EXTENDED = {"o3d_search_param_t", "o3d_pose_graph_edge_t", "o3d_render_option_t", "o3d_render_material_t"}
 # Several C fields shown as one value: (struct, first field) -> (type, {C field: member path}).
@@ -68,7 +69,8 @@ CPP_EXTENDED = {"o3d_search_param_t", "o3d_pose_graph_edge_t", "o3d_render_optio
 CPP_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", {"kernel": "kernel.type", "kernel_k": "kernel.k"})}
 CPP_INCLUDES = ["o3dpp/common.hpp", "o3dpp/options.hpp", "o3dpp/robust_kernel.hpp", "o3dpp/span.hpp"]
 
-RUST_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_image_convert": "ConvertType"}
+RUST_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_image_convert": "ConvertType",
+              "o3d_tsdf_volume_color_type": "TSDFVolumeColorType"}
 # Data-carrying enums or named accessors instead: RobustKernel { k }, SearchParam, CorrespondenceChecker(t),
 # points()/colors()/...; create_mobius edits the raw struct.
 RUST_SKIP = {"o3d_search_kind", "o3d_robust_kernel", "o3d_correspondence_checker_kind", "o3d_pointcloud_array",
@@ -94,11 +96,12 @@ PY_ENUMS = {
     "o3d_image_filter_type": None, "o3d_image_convert": [("ColorToIntensityConversionType",) * 2],
     "o3d_intrinsic_preset": [("IntrinsicPreset", "PinholeCameraIntrinsicParameters")],
     "o3d_simplification_contraction": None, "o3d_filter_scope": None,
+    "o3d_tsdf_volume_color_type": [("TSDFVolumeColorType",) * 2],
 }
 PY_VARIANTS = {
     "O3D_MESH_SHADE_FLAT": "FlatShade", "O3D_MESH_SHADE_SMOOTH": "SmoothShade", "O3D_IMAGE_FILTER_SOBEL3_DX": "Sobel3dx",
     "O3D_IMAGE_FILTER_SOBEL3_DY": "Sobel3dy", "O3D_INTRINSIC_KINECT2_DEPTH_DEFAULT": "Kinect2DepthCameraDefault",
-    "O3D_INTRINSIC_KINECT2_COLOR_DEFAULT": "Kinect2ColorCameraDefault",
+    "O3D_INTRINSIC_KINECT2_COLOR_DEFAULT": "Kinect2ColorCameraDefault", "O3D_TSDF_VOLUME_COLOR_TYPE_RGB8": "RGB8",
 }
 PY_FIELD_ENUMS = {"point_color_option": "PointColorOption", "mesh_color_option": "MeshColorOption"}
 # Fields Open3D's Python classes do not have (threads are call arguments there; lights are not exposed).
@@ -107,8 +110,13 @@ PY_OMIT = {"o3d_fgr_options_t": {"num_threads"},
                                    "light_specular_shininess"}}
 
 # ---- pass-through methods (tools/binding_methods.py): the handles' classes and the functions each shows ----
-HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh"}  # the class of a handle parameter (default: camel case)
+HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh", "o3d_tsdf_volume_t": "TSDFVolume"}  # the class of a handle parameter (default: camel case)
 RBB = {"reset_bounding_box": "true"}
+# The TSDF volume's calls and getters, shown under the same names in C++, Rust and Python.
+TSDF_CALLS = ("reset", "extract_triangle_mesh", "extract_point_cloud", "extract_voxel_point_cloud", "extract_voxel_grid",
+              "is_scalable", "block_count")
+TSDF_PROPERTIES = ("voxel_length", "sdf_trunc", "color_type", "length", "resolution", "origin", "volume_unit_resolution",
+                   "depth_sampling_stride")
 # C function -> (C++ method name or None for the derived one, {parameter: default argument}).
 CPP_METHODS = {
     "o3d_visualizer_create_window": (None, {"window_name": '"o3d"', "width": "1920", "height": "1080", "left": "-1",
@@ -194,6 +202,10 @@ CPP_METHODS = {
         "read_json", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{c}": (None, {}) for c in ("is_selecting", "crop_to_selection", "set_crop_directory")},
+    "o3d_tsdf_volume_create_uniform": ("uniform", {}),
+    "o3d_tsdf_volume_create_scalable": ("scalable", {"volume_unit_resolution": "16", "depth_sampling_stride": "4"}),
+    **{f"o3d_tsdf_volume_{c}": (None, {}) for c in TSDF_CALLS},
+    **{f"o3d_tsdf_volume_get_{c}": (c, {}) for c in TSDF_PROPERTIES},
 }
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
@@ -207,7 +219,9 @@ CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/v
                "o3d_voxelgrid_t": ("VoxelGrid", "voxelgrid", "done", [
                    "o3dpp/pointcloud.hpp", "o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
                "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "selection", "done", [
-                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp"])}
+                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp"]),
+               "o3d_tsdf_volume_t": ("TSDFVolume", "integration", "done", [
+                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp", "o3dpp/voxelgrid.hpp"])}
 # C function -> Rust method name (None: the derived one).
 RUST_METHODS = {
     "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,
@@ -259,16 +273,20 @@ RUST_METHODS = {
         "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{n}": None for n in ("is_selecting", "crop_to_selection", "set_crop_directory")},
+    "o3d_tsdf_volume_create_uniform": "new_uniform", "o3d_tsdf_volume_create_scalable": "new_scalable",
+    **{f"o3d_tsdf_volume_{c}": None for c in TSDF_CALLS},
+    **{f"o3d_tsdf_volume_get_{c}": c for c in TSDF_PROPERTIES},
 }
 # int32_t parameters Rust takes as usize (counts of iterations, segments), converted by crate::util::to_i32: a value
 # over i32::MAX is an InvalidArgument error naming the parameter.
 RUST_USIZE = {"number_of_iterations", "resolution", "split", "radial_resolution", "tubular_resolution",
-              "cylinder_split", "cone_split", "max_depth"}
+              "cylinder_split", "cone_split", "max_depth", "volume_unit_resolution", "depth_sampling_stride"}
 # A handle -> the crate function that owns a new one a C call wrote (made by `handle!`).
 RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglemesh_t": "crate::trianglemesh::new_mesh",
               "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
               "o3d_voxelgrid_t": "crate::voxelgrid::new_grid",
-              "o3d_selection_polygon_volume_t": "crate::selection::new_volume", "o3d_octree_t": "crate::octree::new_octree"}
+              "o3d_selection_polygon_volume_t": "crate::selection::new_volume", "o3d_octree_t": "crate::octree::new_octree",
+              "o3d_tsdf_volume_t": "crate::integration::new_volume"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
@@ -282,7 +300,8 @@ RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False)
                 "o3d_camera_trajectory_t": ("CameraTrajectory", "&mut self", "self.raw_mut()", True),
                 "o3d_octree_t": ("Octree", "&mut self", "self.raw_mut()", True),
                 "o3d_kdtree_t": ("KDTreeFlann", "&self", "self.as_raw()", False),
-                "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "&mut self", "self.raw_mut()", False)}
+                "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "&mut self", "self.raw_mut()", False),
+                "o3d_tsdf_volume_t": ("TSDFVolume", "&mut self", "self.raw_mut()", False)}
 
 # Python: C function -> (Python class, name (None: the derived one), {C parameter: "keyword=default"}); a keyword
 # left out is the C name; a default is written in Python (True, None, 0.5, inf, (0.0, 0.0, 1.0)) or as a constant.
@@ -346,12 +365,21 @@ PY_METHODS = {
     "o3d_offscreen_renderer_has_geometry": ("Open3DScene", None, {}),
     "o3d_offscreen_renderer_remove_geometry": ("Open3DScene", None, {}),
     "o3d_offscreen_renderer_clear_geometries": ("Open3DScene", "clear_geometry", {}),
+    "o3d_tsdf_volume_create_uniform": ("UniformTSDFVolume", "__init__", {"origin": "=None"}),
+    "o3d_tsdf_volume_create_scalable": ("ScalableTSDFVolume", "__init__", {"volume_unit_resolution": "=16",
+                                                                           "depth_sampling_stride": "=4"}),
+    **{f"o3d_tsdf_volume_{c}": ("TSDFVolume", None, {}) for c in TSDF_CALLS},
+    **{f"o3d_tsdf_volume_get_{c}": ("TSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[:3]},
+    **{f"o3d_tsdf_volume_get_{c}": ("UniformTSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[3:6]},
+    **{f"o3d_tsdf_volume_get_{c}": ("ScalableTSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[6:]},
 }
 # Python class -> (handle, whether a method that changes the object returns it, as Open3D's geometries do).
 PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_trianglemesh_t", True),
               "LineSet": ("o3d_lineset_t", True), "Image": ("o3d_image_t", False), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
-              "Open3DScene": ("o3d_offscreen_renderer_t", False)}
-PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage"}  # the extension's classes
+              "Open3DScene": ("o3d_offscreen_renderer_t", False), "TSDFVolume": ("o3d_tsdf_volume_t", False),
+              "UniformTSDFVolume": ("o3d_tsdf_volume_t", False), "ScalableTSDFVolume": ("o3d_tsdf_volume_t", False)}
+PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage",
+            "o3d_voxelgrid_t": "PyVoxelGrid"}  # the extension's classes
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
 # changing methods that return None in Open3D.
 PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",
@@ -612,7 +640,9 @@ def cpp_method_body(m, handle, name, sig, args, checked):
         call = f"{m.c}(" + ", ".join(["self().get()"] + args) + ")"
         return [f"    Self& {name}({sig}){const} {{", f"        return {check}({call});", "    }"]
     array = cpp_array(m.out) if m.out_kind == "array" else None
+    enum = cpp_enum_name(m.out_group) if m.out_group else None
     ret, init, value = {"bool": ("bool", "int32_t out = 0;", "out != 0"), "int": ("int", "int32_t out = 0;", "out"),
+                        "enum": (enum, "int32_t out = 0;", f"static_cast<{enum}>(out)"),
                         "int64": ("int64_t", "int64_t out = 0;", "out"), "size": ("std::size_t", "size_t out = 0;", "out"),
                         "double": ("double", "double out = 0;", "out"), "array": (array, f"{array} out{{}};", "out")
                         }[m.out_kind]
@@ -802,13 +832,21 @@ def gen_py_method(m, cls, groups):
             target = "self.for_resize()" if m.c in PY_RESIZING else "self.h"
             body.append(f"locked_mut({target}, [&]({handle}* c_) {{ return {call}; }}{filename});")
     if m.new:
-        body.append(f"return {PY_TYPES[m.new]}(out);")
+        body.append(f"return {'Self' if name == '__init__' else PY_TYPES[m.new]}(out);")
     elif m.out is not None:
         body.append({"bool": "return out != 0;", "array": "return vec3_to_array(out.data());" if m.out["array"] == 3
-                     else f"return mat_to_array(out.data(), {m.out['array']}, 0);"}.get(m.out_kind, "return out;"))
+                     else f"return mat_to_array(out.data(), {m.out['array']}, 0);",
+                     "enum": f"return ({py_enum_types(m.out_group)[0][0] if m.out_group else ''})out;"
+                     }.get(m.out_kind, "return out;"))
     elif returns_self:
         body.append("return self_;")
     doc = c_string(py_method_doc(m, keywords, returns_self))
+    if name == "__init__":  # a constructor: the class is made from the new handle
+        return ["    cls.def(", f"        py::init([]({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + \
+            ["        }),", "        " + ", ".join(py_args + [doc]) + ");"]
+    if name and name.startswith("@"):  # a read-only property (a const getter without parameters)
+        return [f"    cls.def_property_readonly(", f'        "{name[1:]}",', f"        []({', '.join(lambda_params)}) {{"] + \
+            [f"            {b}" for b in body] + ["        },", f"        {doc});"]
     return [f"    cls.{'def_static' if m.static else 'def'}(", f'        "{name or m.default_name(handle)}",',
             f"        []({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + \
         ["        },", "        " + ", ".join(py_args + [doc]) + ");"]
@@ -823,8 +861,8 @@ def gen_python_methods(model, groups, stem, classes):
     for cls in classes:
         handle = PY_CLASSES[cls][0]
         wanted = {c for c, spec in PY_METHODS.items() if spec[0] == cls}
-        out += ["", f"/// The pass-through methods of {cls} ({handle}).", "template <typename Self>",
-                f"void def_{py_class_stem(cls)}_methods(py::class_<Self>& cls) {{"]
+        out += ["", f"/// The pass-through methods of {cls} ({handle}).", "template <typename Self, typename... Bases>",
+                f"void def_{py_class_stem(cls)}_methods(py::class_<Self, Bases...>& cls) {{"]
         for m in binding_methods.methods(model, groups, handle, wanted):
             out += gen_py_method(m, cls, groups)
         out.append("}")
@@ -966,15 +1004,17 @@ def gen_rust_methods(model, groups, handle):
         n = m.out and m.out["array"]
         ret, init, value = {None: ("&mut Self", None, None) if chain else ("()", None, None), "bool": ("bool", "0", "out != 0"),
                             "int": ("i32", "0", "out"), "int64": ("i64", "0", "out"), "size": ("usize", "0", "out"),
-                            "double": ("f64", "0.0", "out"), "array": (f"[{elem}; {n}]", f"[{zero}; {n}]", "out")}[m.out_kind]
+                            "double": ("f64", "0.0", "out"), "array": (f"[{elem}; {n}]", f"[{zero}; {n}]", "out"),
+                            "enum": (m.out_group and rust_enum_name(m.out_group), "0", None)}[m.out_kind]
         outs = ["out.as_mut_ptr()" if m.out_kind == "array" else "&mut out"] if m.out else []
         call = f"sys::{m.c}(" + ", ".join(outs + me + args) + ")"
         out += [f"    pub fn {name}({sig}) -> Result<{ret}> {{"] + rust_conversions(m)
         if init:
             out.append(f"        let mut out = {init};")
+        tail = (f".and_then(|()| {ret}::from_raw(out))" if m.out_kind == "enum" else f".map(|()| {value})" if value
+                else "?;\n        Ok(self)" if chain else "")
         out += ["        // SAFETY: a valid handle; pointers to values that live for the call.",
-                f"        check(unsafe {{ {call} }})" + (f".map(|()| {value})" if value else "?;\n        Ok(self)" if chain
-                                                                  else ""), "    }"]
+                f"        check(unsafe {{ {call} }}){tail}", "    }"]
     return out + ["}"]
 
 

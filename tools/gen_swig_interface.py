@@ -31,7 +31,7 @@ import capi_model  # noqa: E402
 
 CLASS_NAMES = {  # C type -> class name (default: CamelCase of the noun)
     "o3d_pointcloud_t": "PointCloud", "o3d_trianglemesh_t": "TriangleMesh", "o3d_kdtree_t": "KDTreeFlann",
-    "o3d_lineset_t": "LineSet", "o3d_voxelgrid_t": "VoxelGrid", "o3d_rgbd_image_t": "RGBDImage",
+    "o3d_lineset_t": "LineSet", "o3d_voxelgrid_t": "VoxelGrid", "o3d_rgbd_image_t": "RGBDImage", "o3d_tsdf_volume_t": "TSDFVolume",
     "o3d_obb_t": "OrientedBoundingBox", "o3d_pinhole_intrinsic_t": "PinholeCameraIntrinsic",
     "o3d_camera_trajectory_t": "PinholeCameraTrajectory", "o3d_icp_options_t": "IcpOptions",
     "o3d_fgr_options_t": "FgrOptions", "o3d_rgbd_options_t": "RgbdOptions",
@@ -69,6 +69,7 @@ CAPACITY = {
     "o3d_voxelgrid_check_if_included": "xyz.n / 3",
     "o3d_visualizer_get_picked_points": "query",
     "o3d_selection_polygon_volume_get_bounding_polygon": "query",
+    "o3d_tsdf_volume_extract_volume_tsdf": "query", "o3d_tsdf_volume_extract_volume_color": "query",
     "o3d_selection_polygon_volume_crop_in_polygon": PC_SIZE.format("pc"),
 }
 # o3d_buffer_t outputs holding UTF-8 text: returned as a string (o3dx_text: copied once, then freed).
@@ -77,7 +78,8 @@ TEXT = {"o3d_visualizer_get_view_status"}
 LENGTH = {"o3d_feature_create_from_data": "dimension * num", "o3d_kdtree_create_from_points_xd": "dimension * n"}
 PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_correspondence_set"}
 # Values per row of a copy-out array whose count is in rows (default 1; PAIRS: 2).
-OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3}
+OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3, "o3d_tsdf_volume_extract_volume_tsdf": 2,
+             "o3d_tsdf_volume_extract_volume_color": 3}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
 ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
 # int32 outputs that are flags (besides an `_is_` / `has_` function's).

@@ -66,6 +66,7 @@ O3DX_CS_IN(u8, byte)
   }
 %enddef
 O3DX_CS_OUT(f64, double)
+O3DX_CS_OUT(f32, float)
 O3DX_CS_OUT(i32, int)
 O3DX_CS_OUT(i64, long)
 O3DX_CS_OUT(u8, byte)

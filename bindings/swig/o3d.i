@@ -72,6 +72,7 @@ static const char *o3dx_message(void) {
     if (!r.p) o3dx_fail(O3D_ERROR_OUT_OF_MEMORY, "out of memory"); \
     return r; }
 O3DX_ALLOC(f64, double)
+O3DX_ALLOC(f32, float)
 O3DX_ALLOC(i32, int32_t)
 O3DX_ALLOC(i64, int64_t)
 O3DX_ALLOC(u8, uint8_t)

@@ -47,6 +47,7 @@ namespace O3d
             if (a is double[]) Marshal.Copy(s.p, a as double[], 0, a.Length);
             else if (a is int[]) Marshal.Copy(s.p, a as int[], 0, a.Length);
             else if (a is long[]) Marshal.Copy(s.p, a as long[], 0, a.Length);
+            else if (a is float[]) Marshal.Copy(s.p, a as float[], 0, a.Length);
             else Marshal.Copy(s.p, a as byte[], 0, a.Length);
             if (s.owned != 0) o3dx_free(s.p);
             return a;

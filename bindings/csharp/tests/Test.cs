@@ -300,6 +300,7 @@ static partial class Test
         VisualizerTests(); // VisualizerTest.cs
         SelectionTests(); // SelectionTest.cs
         OdometryTests(); // OdometryTest.cs
+        IntegrationTests(); // IntegrationTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

@@ -13,6 +13,7 @@ void declare_visualizer(py::module_& m);
 void define_visualizer(py::module_& m);
 void define_selection(py::module_& m);
 void define_odometry(py::module_& m);
+void define_integration(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -56,4 +57,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_visualizer(m);
     o::define_selection(m);
     o::define_odometry(m);
+    o::define_integration(m);
 }

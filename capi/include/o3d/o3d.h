@@ -26,5 +26,7 @@
 #include "o3d/visualizer.h"
 #include "o3d/selection.h"
 #include "o3d/odometry.h"
+#include "o3d/integration.h"
+#include "o3d/color_map.h"
 
 #endif /* O3D_O3D_H */

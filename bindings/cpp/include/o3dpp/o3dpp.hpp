@@ -17,6 +17,7 @@
 #include "o3dpp/lineset.hpp"
 #include "o3dpp/octree.hpp"
 #include "o3dpp/odometry.hpp"
+#include "o3dpp/integration.hpp"
 #include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/posegraph.hpp"

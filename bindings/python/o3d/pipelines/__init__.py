@@ -1,5 +1,5 @@
-"""o3d.pipelines: registration (ICP, global registration, pose graphs), odometry (RGB-D); integration is a
-placeholder."""
+"""o3d.pipelines: registration (ICP, global registration, pose graphs), odometry (RGB-D) and integration (TSDF
+volumes)."""
 from . import registration  # noqa: F401
 from . import odometry  # noqa: F401
 from . import integration  # noqa: F401

@@ -12,8 +12,8 @@
 namespace o3dpy {
 
 /// The pass-through methods of Image (o3d_image_t).
-template <typename Self>
-void def_image_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_image_methods(py::class_<Self, Bases...>& cls) {
     cls.def_static(
         "create",
         [](int64_t width, int64_t height, int64_t num_channels, int64_t bytes_per_channel) {

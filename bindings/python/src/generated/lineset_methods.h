@@ -12,8 +12,8 @@
 namespace o3dpy {
 
 /// The pass-through methods of LineSet (o3d_lineset_t).
-template <typename Self>
-void def_line_set_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_line_set_methods(py::class_<Self, Bases...>& cls) {
     cls.def(
         "paint_uniform_color",
         [](py::object self_, py::handle rgb) {

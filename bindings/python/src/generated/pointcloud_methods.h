@@ -12,8 +12,8 @@
 namespace o3dpy {
 
 /// The pass-through methods of PointCloud (o3d_pointcloud_t).
-template <typename Self>
-void def_point_cloud_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_point_cloud_methods(py::class_<Self, Bases...>& cls) {
     cls.def(
         "clear",
         [](py::object self_) {

@@ -59,6 +59,17 @@ inline py::enum_<ColorToIntensityConversionType> def_enum<ColorToIntensityConver
     return e;
 }
 
+/// What colour each voxel keeps (Open3D's TSDFVolumeColorType; O3D_TSDF_VOLUME_COLOR_TYPE_*).
+enum class TSDFVolumeColorType : int32_t { NoColor = O3D_TSDF_VOLUME_COLOR_TYPE_NO_COLOR, RGB8 = O3D_TSDF_VOLUME_COLOR_TYPE_RGB8, Gray32 = O3D_TSDF_VOLUME_COLOR_TYPE_GRAY32 };
+template <>
+inline py::enum_<TSDFVolumeColorType> def_enum<TSDFVolumeColorType>(py::handle scope) {
+    py::enum_<TSDFVolumeColorType> e(scope, "TSDFVolumeColorType", "What colour each voxel keeps (Open3D's TSDFVolumeColorType).");
+    e.value("NoColor", TSDFVolumeColorType::NoColor, "No colour.");
+    e.value("RGB8", TSDFVolumeColorType::RGB8, "The frames' 8-bit RGB colour.");
+    e.value("Gray32", TSDFVolumeColorType::Gray32, "The frames' float intensity, kept as a grey colour.");
+    return e;
+}
+
 /// How vertex clustering places a cluster's vertex (O3D_SIMPLIFICATION_*).
 enum class SimplificationContraction : int32_t { Average = O3D_SIMPLIFICATION_AVERAGE, Quadric = O3D_SIMPLIFICATION_QUADRIC };
 template <>
@@ -118,6 +129,40 @@ inline py::enum_<MeshColorOption> def_enum<MeshColorOption>(py::handle scope) {
     e.value("Normal", MeshColorOption::Normal, "Normal * 0.5 + 0.5 (black without normals).");
     return e;
 }
+
+/// o3d_color_map_rigid_options_t (color_map.h): RigidOptimizerOption (Open3D's C++ defaults), plus threads and progress.
+template <>
+struct Fields<o3d_color_map_rigid_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("maximum_iteration", &o3d_color_map_rigid_options_t::maximum_iteration, As<int32_t>{}, "Alternations of pose and vertex-intensity update (>= 0); default 300.");
+        f("maximum_allowable_depth", &o3d_color_map_rigid_options_t::maximum_allowable_depth, As<double>{}, "Metres (> 0): deeper pixels see nothing (drops background); default 2.5.");
+        f("depth_threshold_for_visibility_check", &o3d_color_map_rigid_options_t::depth_threshold_for_visibility_check, As<double>{}, "Metres (> 0): a vertex is seen only when its depth and the image's differ by at most this; default 0.03.");
+        f("depth_threshold_for_discontinuity_check", &o3d_color_map_rigid_options_t::depth_threshold_for_discontinuity_check, As<double>{}, "(> 0) pixels whose depth Sobel magnitude (unscaled 3x3) is larger are depth edges; default 0.1.");
+        f("half_dilation_kernel_size_for_discontinuity_map", &o3d_color_map_rigid_options_t::half_dilation_kernel_size_for_discontinuity_map, As<int32_t>{}, "Pixels (>= 0) around a depth edge that see nothing; default 3.");
+        f("image_boundary_margin", &o3d_color_map_rigid_options_t::image_boundary_margin, As<int32_t>{}, "Pixels (>= 0) at the image border that see nothing; default 10.");
+        f("invisible_vertex_color_knn", &o3d_color_map_rigid_options_t::invisible_vertex_color_knn, As<int32_t>{}, "(>= 1) seen neighbours an unseen vertex takes its colour from; default 3.");
+        f("num_threads", &o3d_color_map_rigid_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
+    }
+};
+
+/// o3d_color_map_non_rigid_options_t (color_map.h): NonRigidOptimizerOption (Open3D's C++ defaults), plus threads and progress.
+template <>
+struct Fields<o3d_color_map_non_rigid_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("number_of_vertical_anchors", &o3d_color_map_non_rigid_options_t::number_of_vertical_anchors, As<int32_t>{}, "(>= 2) rows of each image's anchor grid; its columns keep the same spacing; default 16.");
+        f("non_rigid_anchor_point_weight", &o3d_color_map_non_rigid_options_t::non_rigid_anchor_point_weight, As<double>{}, "Lambda (>= 0) of the regulariser lambda^2 * sum ||offset||^2 (offsets in pixels, intensities in [0, 1]): larger keeps the warp smaller; default 0.316.");
+        f("maximum_iteration", &o3d_color_map_non_rigid_options_t::maximum_iteration, As<int32_t>{}, "Alternations of pose and vertex-intensity update (>= 0); default 300.");
+        f("maximum_allowable_depth", &o3d_color_map_non_rigid_options_t::maximum_allowable_depth, As<double>{}, "Metres (> 0): deeper pixels see nothing (drops background); default 2.5.");
+        f("depth_threshold_for_visibility_check", &o3d_color_map_non_rigid_options_t::depth_threshold_for_visibility_check, As<double>{}, "Metres (> 0): a vertex is seen only when its depth and the image's differ by at most this; default 0.03.");
+        f("depth_threshold_for_discontinuity_check", &o3d_color_map_non_rigid_options_t::depth_threshold_for_discontinuity_check, As<double>{}, "(> 0) pixels whose depth Sobel magnitude (unscaled 3x3) is larger are depth edges; default 0.1.");
+        f("half_dilation_kernel_size_for_discontinuity_map", &o3d_color_map_non_rigid_options_t::half_dilation_kernel_size_for_discontinuity_map, As<int32_t>{}, "Pixels (>= 0) around a depth edge that see nothing; default 3.");
+        f("image_boundary_margin", &o3d_color_map_non_rigid_options_t::image_boundary_margin, As<int32_t>{}, "Pixels (>= 0) at the image border that see nothing; default 10.");
+        f("invisible_vertex_color_knn", &o3d_color_map_non_rigid_options_t::invisible_vertex_color_knn, As<int32_t>{}, "(>= 1) seen neighbours an unseen vertex takes its colour from; default 3.");
+        f("num_threads", &o3d_color_map_non_rigid_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
+    }
+};
 
 /// o3d_read_options_t (io.h): Read options (o3d.io.read_point_cloud keyword arguments).
 template <>

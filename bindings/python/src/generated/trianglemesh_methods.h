@@ -12,8 +12,8 @@
 namespace o3dpy {
 
 /// The pass-through methods of TriangleMesh (o3d_trianglemesh_t).
-template <typename Self>
-void def_triangle_mesh_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_triangle_mesh_methods(py::class_<Self, Bases...>& cls) {
     cls.def(
         "clear",
         [](py::object self_) {

@@ -12,8 +12,8 @@
 namespace o3dpy {
 
 /// The pass-through methods of OffscreenRenderer (o3d_offscreen_renderer_t).
-template <typename Self>
-void def_offscreen_renderer_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_offscreen_renderer_methods(py::class_<Self, Bases...>& cls) {
     cls.def(
         "setup_camera_lookat",
         [](Self& self, py::handle lookat, py::handle front, py::handle up, double zoom) {
@@ -42,8 +42,8 @@ void def_offscreen_renderer_methods(py::class_<Self>& cls) {
 }
 
 /// The pass-through methods of Open3DScene (o3d_offscreen_renderer_t).
-template <typename Self>
-void def_open3d_scene_methods(py::class_<Self>& cls) {
+template <typename Self, typename... Bases>
+void def_open3d_scene_methods(py::class_<Self, Bases...>& cls) {
     cls.def(
         "has_geometry",
         [](Self& self, const std::string& name) {

@@ -44,6 +44,7 @@ mod error;
 mod feature;
 mod hull;
 mod image;
+pub mod integration;
 pub mod io;
 mod io_geometry;
 mod kdtree;

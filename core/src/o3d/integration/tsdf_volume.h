@@ -9,6 +9,7 @@
 #include "o3d/geometry/point_cloud.h"
 #include "o3d/geometry/rgbd_image.h"
 #include "o3d/geometry/triangle_mesh.h"
+#include "o3d/geometry/voxel_grid.h"
 #include "o3d/integration/voxel_block.h"
 
 namespace o3d::integration {
@@ -41,6 +42,12 @@ public:
     /// @brief The zero crossings between neighbouring observed voxels (|tsdf| < 0.98 on both), with normals
     /// from the tsdf's gradient and colours.
     geometry::PointCloud extract_point_cloud() const;
+    /// @brief The centre of every observed, untruncated voxel (|tsdf| < 0.98), coloured grey by
+    /// (tsdf + 1) / 2, as Open3D's debug view; voxels in grid order.
+    geometry::PointCloud extract_voxel_point_cloud() const;
+    /// @brief The same voxels as a VoxelGrid of edge voxel_length at the volume's origin (grid index: the voxel's
+    /// index from that origin).
+    geometry::VoxelGrid extract_voxel_grid() const;
 
 protected:
     TSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type, int block_side,

@@ -8,8 +8,6 @@
 namespace o3d::integration {
 namespace {
 
-constexpr float kUntruncated = 0.98f;
-
 int checked_resolution(int resolution) {
     if (resolution < 1 || resolution > 2048)
         throw InvalidArgument("UniformTSDFVolume: resolution must be in [1, 2048], got " + std::to_string(resolution));
@@ -43,44 +41,6 @@ void UniformTSDFVolume::reset() {
 void UniformTSDFVolume::integrate(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                                   const Eigen::Matrix4d& extrinsic) {
     integrate_into(image, intrinsic, extrinsic, {Eigen::Vector3i::Zero()});
-}
-
-geometry::PointCloud UniformTSDFVolume::extract_voxel_point_cloud() const {
-    const detail::VoxelBlock& block = voxels();
-    geometry::PointCloud cloud;
-    size_t i = 0;
-    for (int x = 0; x < resolution_; ++x) {
-        for (int y = 0; y < resolution_; ++y) {
-            for (int z = 0; z < resolution_; ++z, ++i) {
-                const float f = block.tsdf[i];
-                if (block.weight[i] == 0.0f || !(f < kUntruncated && f >= -kUntruncated)) continue;
-                cloud.points.push_back(origin() + voxel_length_ * Eigen::Vector3d(x + 0.5, y + 0.5, z + 0.5));
-                const double grey = (double(f) + 1.0) * 0.5;
-                cloud.colors.push_back(Eigen::Vector3d::Constant(grey));
-            }
-        }
-    }
-    return cloud;
-}
-
-geometry::VoxelGrid UniformTSDFVolume::extract_voxel_grid() const {
-    const detail::VoxelBlock& block = voxels();
-    geometry::VoxelGrid grid;
-    grid.voxel_size = voxel_length_;
-    grid.origin = origin();
-    size_t i = 0;
-    for (int x = 0; x < resolution_; ++x) {
-        for (int y = 0; y < resolution_; ++y) {
-            for (int z = 0; z < resolution_; ++z, ++i) {
-                const float f = block.tsdf[i];
-                if (block.weight[i] == 0.0f || !(f < kUntruncated && f >= -kUntruncated)) continue;
-                const double grey = (double(f) + 1.0) * 0.5;
-                // x-major order is the grid's sorted order, so the voxels need no sort.
-                grid.voxels.push_back({Eigen::Vector3i(x, y, z), Eigen::Vector3d::Constant(grey)});
-            }
-        }
-    }
-    return grid;
 }
 
 std::vector<float> UniformTSDFVolume::extract_volume_tsdf() const {

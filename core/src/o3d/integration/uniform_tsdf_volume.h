@@ -3,7 +3,6 @@
 /// @file uniform_tsdf_volume.h
 /// @brief Open3D's UniformTSDFVolume: a dense cube of resolution^3 voxels of edge length / resolution,
 /// allocated up front, whose first corner is `origin`.
-#include "o3d/geometry/voxel_grid.h"
 #include "o3d/integration/tsdf_volume.h"
 
 namespace o3d::integration {
@@ -23,11 +22,6 @@ public:
     void integrate(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                    const Eigen::Matrix4d& extrinsic) override;
 
-    /// @brief The centre of every observed, untruncated voxel (|tsdf| < 0.98), coloured grey by
-    /// (tsdf + 1) / 2, as Open3D's debug view.
-    geometry::PointCloud extract_voxel_point_cloud() const;
-    /// @brief The same voxels as a VoxelGrid of edge voxel_length at `origin`.
-    geometry::VoxelGrid extract_voxel_grid() const;
     /// @brief tsdf and weight of every voxel (2 values each), index (x * resolution + y) * resolution + z.
     std::vector<float> extract_volume_tsdf() const;
     /// @brief The colour of every voxel (3 values each, in [0, 1]), same order; zeros without colour.

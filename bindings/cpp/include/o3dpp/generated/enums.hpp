@@ -48,6 +48,13 @@ enum class ImageConvert : int32_t {
     Weighted = O3D_IMAGE_CONVERT_WEIGHTED,  ///< gray = 0.2990 R + 0.5870 G + 0.1140 B
 };
 
+/// @brief What colour each voxel keeps (Open3D's TSDFVolumeColorType; O3D_TSDF_VOLUME_COLOR_TYPE_*).
+enum class TSDFVolumeColorType : int32_t {
+    NoColor = O3D_TSDF_VOLUME_COLOR_TYPE_NO_COLOR,  ///< no colour
+    RGB8 = O3D_TSDF_VOLUME_COLOR_TYPE_RGB8,  ///< the frames' 8-bit RGB colour
+    Gray32 = O3D_TSDF_VOLUME_COLOR_TYPE_GRAY32,  ///< the frames' float intensity, kept as a grey colour
+};
+
 /// @brief Kinds of neighbourhood search (o3d.geometry.KDTreeSearchParam*; O3D_SEARCH_*).
 enum class SearchKind : int32_t {
     Knn = O3D_SEARCH_KNN,  ///< the `knn` nearest points

@@ -21,6 +21,70 @@ struct PoseGraphEdge;
 struct SearchParam;
 
 namespace detail {
+/// @brief The fields of o3d_color_map_rigid_options_t (color_map.h).
+struct ColorMapRigidOptionsFields {
+    int maximum_iteration;  ///< alternations of pose and vertex-intensity update (>= 0); default 300
+    double maximum_allowable_depth;  ///< metres (> 0): deeper pixels see nothing (drops background); default 2.5
+    double depth_threshold_for_visibility_check;  ///< metres (> 0): a vertex is seen only when its depth and the image's differ by at most this; default 0.03
+    double depth_threshold_for_discontinuity_check;  ///< (> 0) pixels whose depth Sobel magnitude (unscaled 3x3) is larger are depth edges; default 0.1
+    int half_dilation_kernel_size_for_discontinuity_map;  ///< pixels (>= 0) around a depth edge that see nothing; default 3
+    int image_boundary_margin;  ///< pixels (>= 0) at the image border that see nothing; default 10
+    int invisible_vertex_color_knn;  ///< (>= 1) seen neighbours an unseen vertex takes its colour from; default 3
+    int num_threads;  ///< 0 = library default; the result does not depend on it
+    ProgressCallback progress;  ///< called after each iteration with (iteration+1)/maximum_iteration; may be empty; return false to cancel (an exception it throws cancels the call and is rethrown)
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.maximum_iteration, c.maximum_iteration);
+        f(s.maximum_allowable_depth, c.maximum_allowable_depth);
+        f(s.depth_threshold_for_visibility_check, c.depth_threshold_for_visibility_check);
+        f(s.depth_threshold_for_discontinuity_check, c.depth_threshold_for_discontinuity_check);
+        f(s.half_dilation_kernel_size_for_discontinuity_map, c.half_dilation_kernel_size_for_discontinuity_map);
+        f(s.image_boundary_margin, c.image_boundary_margin);
+        f(s.invisible_vertex_color_knn, c.invisible_vertex_color_knn);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief RigidOptimizerOption (Open3D's C++ defaults), plus threads and progress. Defaults from o3d_color_map_rigid_options_init.
+struct ColorMapRigidOptions : COptions<ColorMapRigidOptions, detail::ColorMapRigidOptionsFields, o3d_color_map_rigid_options_t, &o3d_color_map_rigid_options_init> {};
+
+namespace detail {
+/// @brief The fields of o3d_color_map_non_rigid_options_t (color_map.h).
+struct ColorMapNonRigidOptionsFields {
+    int number_of_vertical_anchors;  ///< (>= 2) rows of each image's anchor grid; its columns keep the same spacing; default 16
+    double non_rigid_anchor_point_weight;  ///< lambda (>= 0) of the regulariser lambda^2 * sum ||offset||^2 (offsets in pixels, intensities in [0, 1]): larger keeps the warp smaller; default 0.316
+    int maximum_iteration;  ///< alternations of pose and vertex-intensity update (>= 0); default 300
+    double maximum_allowable_depth;  ///< metres (> 0): deeper pixels see nothing (drops background); default 2.5
+    double depth_threshold_for_visibility_check;  ///< metres (> 0): a vertex is seen only when its depth and the image's differ by at most this; default 0.03
+    double depth_threshold_for_discontinuity_check;  ///< (> 0) pixels whose depth Sobel magnitude (unscaled 3x3) is larger are depth edges; default 0.1
+    int half_dilation_kernel_size_for_discontinuity_map;  ///< pixels (>= 0) around a depth edge that see nothing; default 3
+    int image_boundary_margin;  ///< pixels (>= 0) at the image border that see nothing; default 10
+    int invisible_vertex_color_knn;  ///< (>= 1) seen neighbours an unseen vertex takes its colour from; default 3
+    int num_threads;  ///< 0 = library default; the result does not depend on it
+    ProgressCallback progress;  ///< called after each iteration with (iteration+1)/maximum_iteration; may be empty; return false to cancel (an exception it throws cancels the call and is rethrown)
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.number_of_vertical_anchors, c.number_of_vertical_anchors);
+        f(s.non_rigid_anchor_point_weight, c.non_rigid_anchor_point_weight);
+        f(s.maximum_iteration, c.maximum_iteration);
+        f(s.maximum_allowable_depth, c.maximum_allowable_depth);
+        f(s.depth_threshold_for_visibility_check, c.depth_threshold_for_visibility_check);
+        f(s.depth_threshold_for_discontinuity_check, c.depth_threshold_for_discontinuity_check);
+        f(s.half_dilation_kernel_size_for_discontinuity_map, c.half_dilation_kernel_size_for_discontinuity_map);
+        f(s.image_boundary_margin, c.image_boundary_margin);
+        f(s.invisible_vertex_color_knn, c.invisible_vertex_color_knn);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief NonRigidOptimizerOption (Open3D's C++ defaults), plus threads and progress. Defaults from o3d_color_map_non_rigid_options_init.
+struct ColorMapNonRigidOptions : COptions<ColorMapNonRigidOptions, detail::ColorMapNonRigidOptionsFields, o3d_color_map_non_rigid_options_t, &o3d_color_map_non_rigid_options_init> {};
+
+namespace detail {
 /// @brief The fields of o3d_read_options_t (io.h).
 struct ReadOptionsFields {
     bool remove_nan_points;  ///< drop points with a NaN coordinate; default false

@@ -67,16 +67,12 @@ void TSDFVolume::check_frame(const geometry::RGBDImage& image, const camera::Pin
 void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                                 const Eigen::Matrix4d& extrinsic, const std::vector<Eigen::Vector3i>& keys) {
     check_frame(image, intrinsic, extrinsic);
-    if (!same_intrinsic(intrinsic, multiplier_intrinsic_) || distance_multiplier_.empty()) {
-        distance_multiplier_.resize(size_t(intrinsic.width) * size_t(intrinsic.height));
-        for (int v = 0; v < intrinsic.height; ++v) {
-            for (int u = 0; u < intrinsic.width; ++u) {
-                const double x = (u - intrinsic.cx) / intrinsic.fx, y = (v - intrinsic.cy) / intrinsic.fy;
-                distance_multiplier_[size_t(v) * size_t(intrinsic.width) + size_t(u)] =
-                    float(std::sqrt(1.0 + x * x + y * y));
-            }
-        }
-        multiplier_intrinsic_ = intrinsic;
+    if (!same_intrinsic(intrinsic, ray_intrinsic_) || ray_x2_.empty()) {
+        ray_x2_.resize(size_t(intrinsic.width));
+        ray_y2_.resize(size_t(intrinsic.height));
+        for (int u = 0; u < intrinsic.width; ++u) ray_x2_[size_t(u)] = float(std::pow((u - intrinsic.cx) / intrinsic.fx, 2));
+        for (int v = 0; v < intrinsic.height; ++v) ray_y2_[size_t(v)] = float(std::pow((v - intrinsic.cy) / intrinsic.fy, 2));
+        ray_intrinsic_ = intrinsic;
     }
     detail::FrameView frame;
     frame.width = intrinsic.width;
@@ -86,7 +82,8 @@ void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::
     frame.cx = float(intrinsic.cx);
     frame.cy = float(intrinsic.cy);
     frame.depth = reinterpret_cast<const float*>(image.depth.data.data());
-    frame.distance_multiplier = distance_multiplier_.data();
+    frame.ray_x2 = ray_x2_.data();
+    frame.ray_y2 = ray_y2_.data();
     if (color_type_ == ColorType::RGB8) frame.rgb = image.color.data.data();
     if (color_type_ == ColorType::Gray32) frame.intensity = reinterpret_cast<const float*>(image.color.data.data());
     frame.rotation = extrinsic.topLeftCorner<3, 3>().cast<float>();

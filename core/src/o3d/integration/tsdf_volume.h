@@ -63,9 +63,10 @@ protected:
     double sdf_trunc_;
     ColorType color_type_;
     detail::BlockMap blocks_;
-    // Open3D's depth-to-camera-distance multiplier image, kept for the intrinsic it was made for.
-    camera::PinholeCameraIntrinsic multiplier_intrinsic_;
-    std::vector<float> distance_multiplier_;
+    // Each column's and row's squared normalised ray coordinate (Open3D's depth-to-distance factor is
+    // sqrt(1 + x^2 + y^2)), kept for the intrinsic they were made for.
+    camera::PinholeCameraIntrinsic ray_intrinsic_;
+    std::vector<float> ray_x2_, ray_y2_;
 };
 
 }  // namespace o3d::integration

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The paper's Figure 1 task on a synthesized scan, then ICP, global registration and a mesh pass, printing what it does
-and writing pictures of it (PNG, rendered by o3d without a display).
+"""The paper's Figure 1 task on a synthesized scan, then ICP, global registration, a mesh pass and the reconstruction of
+a short RGB-D stretch (reconstruction.py), printing what it does and writing pictures of it (PNG, rendered by o3d without a display).
 
 Written exactly as it would be for Open3D (`import open3d as o3d`); only the import differs, and the pictures use
 two o3d extras of OffscreenRenderer (`render_option`, for normals and wireframe, and `render_to_png`).
@@ -14,6 +14,8 @@ import time
 import numpy as np
 
 import o3d
+
+import reconstruction  # noqa: E402 (beside this file)
 
 
 def synthesize_scan(n=200_000, seed=7):
@@ -30,8 +32,8 @@ def synthesize_scan(n=200_000, seed=7):
     return xyz
 
 
-def render_png(path, geometries, eye, center, point_show_normal=False, mesh_show_wireframe=False):
-    """Draws [(name, geometry, point_size)] seen from `eye` (z up) into a 800 x 600 PNG."""
+def render_png(path, geometries, eye, center, point_show_normal=False, mesh_show_wireframe=False, up=(0, 0, 1)):
+    """Draws [(name, geometry, point_size)] seen from `eye` (`up` up) into a 800 x 600 PNG."""
     rendering = o3d.visualization.rendering
     renderer = rendering.OffscreenRenderer(800, 600)
     renderer.render_option.point_show_normal = point_show_normal
@@ -41,7 +43,7 @@ def render_png(path, geometries, eye, center, point_show_normal=False, mesh_show
         material = rendering.MaterialRecord()
         material.point_size = point_size
         renderer.scene.add_geometry(name, geometry, material)
-    renderer.setup_camera(60.0, center, eye, [0, 0, 1])
+    renderer.setup_camera(60.0, center, eye, list(up))
     renderer.render_to_png(path)
     return path
 
@@ -151,6 +153,7 @@ def main():
                          lambda: render_png(os.path.join(out_dir, "mesh.png"),
                                             [("sphere", simple, 3), ("samples", samples, 4), ("hull", hull_lines, 1)],
                                             eye=[1.2, -5.5, 2.5], center=[1.2, 0, 0], mesh_show_wireframe=True)))
+    pictures.append(reconstruction.run(out_dir, step, render_png))
     print("pictures:")
     for path in pictures:
         print(f"  {path}")

@@ -2,11 +2,13 @@
 #include "o3d/odometry/odometry_frames.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "o3d/geometry/image_ops.h"
+#include "o3d/utility/parallel.h"
 
 namespace o3d::odometry::detail {
 
@@ -89,20 +91,34 @@ std::vector<Correspondence> correspondences(const LevelCamera& camera, const Eig
     const Eigen::Matrix3d krk_inv = k * motion.topLeftCorner<3, 3>() * k.inverse();
     const Eigen::Vector3d kt = k * motion.topRightCorner<3, 1>();
     const int w = depth_t.width, h = depth_t.height;
+    // Rows are split among threads, each keeping its own list; the lists are joined in row order, so the result is
+    // the serial one for any thread count.
+    const int threads = std::max(1, std::min(utility::resolve_num_threads(), depth_s.height / 16));
+    std::vector<std::vector<Correspondence>> parts(static_cast<size_t>(threads));
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (int part = 0; part < threads; ++part) {
+        std::vector<Correspondence>& out = parts[size_t(part)];
+        const int first = int(int64_t(depth_s.height) * part / threads);
+        const int last = int(int64_t(depth_s.height) * (part + 1) / threads);
+        for (int v_s = first; v_s < last; ++v_s)
+            for (int u_s = 0; u_s < depth_s.width; ++u_s) {
+                const float d_s = depth_s.at(u_s, v_s);
+                if (std::isnan(d_s)) continue;
+                const Eigen::Vector3d uv = double(d_s) * (krk_inv * Eigen::Vector3d(u_s, v_s, 1.0)) + kt;
+                const double z = uv(2);
+                // Open3D's rounding: add a half and truncate toward zero.
+                const int u_t = int(uv(0) / z + 0.5), v_t = int(uv(1) / z + 0.5);
+                if (u_t < 0 || u_t >= w || v_t < 0 || v_t >= h) continue;
+                const float d_t = depth_t.at(u_t, v_t);
+                if (std::isnan(d_t) || !(std::abs(z - double(d_t)) <= depth_diff_max)) continue;
+                out.push_back({u_s, v_s, u_t, v_t});
+            }
+    }
+    size_t total = 0;
+    for (const auto& part : parts) total += part.size();
     std::vector<Correspondence> out;
-    for (int v_s = 0; v_s < depth_s.height; ++v_s)
-        for (int u_s = 0; u_s < depth_s.width; ++u_s) {
-            const float d_s = depth_s.at(u_s, v_s);
-            if (std::isnan(d_s)) continue;
-            const Eigen::Vector3d uv = double(d_s) * (krk_inv * Eigen::Vector3d(u_s, v_s, 1.0)) + kt;
-            const double z = uv(2);
-            // Open3D's rounding: add a half and truncate toward zero.
-            const int u_t = int(uv(0) / z + 0.5), v_t = int(uv(1) / z + 0.5);
-            if (u_t < 0 || u_t >= w || v_t < 0 || v_t >= h) continue;
-            const float d_t = depth_t.at(u_t, v_t);
-            if (std::isnan(d_t) || !(std::abs(z - double(d_t)) <= depth_diff_max)) continue;
-            out.push_back({u_s, v_s, u_t, v_t});
-        }
+    out.reserve(total);
+    for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
     return out;
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Count hand-written binding code: lines of tracked files under bindings/ with the extensions
-.h .hpp .cpp .py .pyi .cs .java .rs .i, leaving out test folders and files whose first five lines say
-they are generated (the measure of issue 10). Prints per language and the total.
+.h .hpp .cpp .py .pyi .cs .java .rs .i, leaving out test folders, C# *Test*.cs files, benches and files whose first
+five lines mark them generated (`@generated`, "automatically generated", "auto-generated" or "do not edit": the
+test of /work/shared/tools/count_binding_lines.sh, the measure of issue 10). Prints per language and the total.
 
     python3 tools/count_binding_lines.py [--files]
 """
@@ -13,7 +14,9 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 EXTENSIONS = (".h", ".hpp", ".cpp", ".py", ".pyi", ".cs", ".java", ".rs", ".i")
-TEST_DIR = re.compile(r"(^|/)tests?/")
+TEST_DIR = re.compile(r"(^|/)(tests?|benches)/|Test[^/]*\.cs$")
+# A mention of the word "generated" is not enough: only these markers say the file itself is generated.
+GENERATED = re.compile(r"@generated|automatically generated|auto-generated|do not edit", re.I)
 
 
 def counted_files():
@@ -24,7 +27,7 @@ def counted_files():
         if not rel.endswith(EXTENSIONS) or TEST_DIR.search(rel) or not path.is_file():
             continue
         head = "".join(path.read_text(errors="replace").splitlines(keepends=True)[:5])
-        if re.search(r"generated", head, re.I):
+        if GENERATED.search(head):
             continue
         yield rel, sum(1 for _ in path.open(errors="replace"))
 

@@ -110,7 +110,7 @@ PY_OMIT = {"o3d_fgr_options_t": {"num_threads"},
                                    "light_specular_shininess"}}
 
 # ---- pass-through methods (tools/binding_methods.py): the handles' classes and the functions each shows ----
-HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh", "o3d_tsdf_volume_t": "TSDFVolume"}  # the class of a handle parameter (default: camel case)
+HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh", "o3d_tsdf_volume_t": "TSDFVolume", "o3d_kdtree_t": "KDTreeFlann"}  # the class of a handle parameter (default: camel case)
 RBB = {"reset_bounding_box": "true"}
 # The TSDF volume's calls and getters, shown under the same names in C++, Rust and Python.
 TSDF_CALLS = ("reset", "extract_triangle_mesh", "extract_point_cloud", "extract_voxel_point_cloud", "extract_voxel_grid",
@@ -199,7 +199,7 @@ CPP_METHODS = {
         "get_voxel")},
     "o3d_voxelgrid_get_voxel_size": ("voxel_size", {}), "o3d_voxelgrid_get_origin": ("origin", {}),
     **{f"o3d_selection_polygon_volume_{c}": (None, {}) for c in (
-        "read_json", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
+        "read_json", "get_orthogonal_axis", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{c}": (None, {}) for c in ("is_selecting", "crop_to_selection", "set_crop_directory")},
     "o3d_tsdf_volume_create_uniform": ("uniform", {}),
@@ -267,10 +267,10 @@ RUST_METHODS = {
         "get_voxel")},
     "o3d_voxelgrid_get_voxel_size": "voxel_size", "o3d_voxelgrid_get_origin": "origin",
     "o3d_camera_trajectory_size": "len", "o3d_camera_trajectory_clear": None, "o3d_kdtree_size": "len",
-    "o3d_kdtree_dimension": None, "o3d_octree_create": "new", "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
+    "o3d_kdtree_dimension": None, "o3d_kdtree_create_from_pointcloud": "new", "o3d_kdtree_create_from_feature": "from_feature", "o3d_octree_create": "new", "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
     "o3d_selection_polygon_volume_create": "new",
     **{f"o3d_selection_polygon_volume_{n}": None for n in (  # (read_json: by hand, its path is converted first)
-        "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
+        "get_orthogonal_axis", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{n}": None for n in ("is_selecting", "crop_to_selection", "set_crop_directory")},
     "o3d_tsdf_volume_create_uniform": "new_uniform", "o3d_tsdf_volume_create_scalable": "new_scalable",
@@ -286,7 +286,7 @@ RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglem
               "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
               "o3d_voxelgrid_t": "crate::voxelgrid::new_grid",
               "o3d_selection_polygon_volume_t": "crate::selection::new_volume", "o3d_octree_t": "crate::octree::new_octree",
-              "o3d_tsdf_volume_t": "crate::integration::new_volume"}
+              "o3d_tsdf_volume_t": "crate::integration::new_volume", "o3d_kdtree_t": "crate::kdtree::new_tree"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
@@ -368,6 +368,15 @@ PY_METHODS = {
     "o3d_tsdf_volume_create_uniform": ("UniformTSDFVolume", "__init__", {"origin": "=None"}),
     "o3d_tsdf_volume_create_scalable": ("ScalableTSDFVolume", "__init__", {"volume_unit_resolution": "=16",
                                                                            "depth_sampling_stride": "=4"}),
+    "o3d_voxelgrid_create_from_point_cloud": ("VoxelGrid", None, {"pc": "input"}),
+    "o3d_voxelgrid_create_from_point_cloud_within_bounds": ("VoxelGrid", None, {"pc": "input"}),
+    "o3d_voxelgrid_create_from_triangle_mesh": ("VoxelGrid", None, {"mesh": "input"}),
+    "o3d_voxelgrid_get_voxel_size": ("VoxelGrid", "@voxel_size", {}), "o3d_voxelgrid_get_origin": ("VoxelGrid", "@origin", {}),
+    "o3d_selection_polygon_volume_crop_point_cloud": ("SelectionPolygonVolume", None, {"pc": "input"}),
+    "o3d_selection_polygon_volume_crop_triangle_mesh": ("SelectionPolygonVolume", None, {}),
+    "o3d_lineset_create_from_triangle_mesh": ("LineSet", None, {}),
+    "o3d_octree_convert_from_point_cloud": ("Octree", None, {"pc": "point_cloud", "size_expand": "=0.01"}),
+    "o3d_octree_num_leaf_nodes": ("Octree", "_num_leaf_nodes", {}),
     **{f"o3d_tsdf_volume_{c}": ("TSDFVolume", None, {}) for c in TSDF_CALLS},
     **{f"o3d_tsdf_volume_get_{c}": ("TSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[:3]},
     **{f"o3d_tsdf_volume_get_{c}": ("UniformTSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[3:6]},
@@ -377,9 +386,11 @@ PY_METHODS = {
 PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_trianglemesh_t", True),
               "LineSet": ("o3d_lineset_t", True), "Image": ("o3d_image_t", False), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
               "Open3DScene": ("o3d_offscreen_renderer_t", False), "TSDFVolume": ("o3d_tsdf_volume_t", False),
-              "UniformTSDFVolume": ("o3d_tsdf_volume_t", False), "ScalableTSDFVolume": ("o3d_tsdf_volume_t", False)}
+              "UniformTSDFVolume": ("o3d_tsdf_volume_t", False), "ScalableTSDFVolume": ("o3d_tsdf_volume_t", False),
+              "VoxelGrid": ("o3d_voxelgrid_t", False), "SelectionPolygonVolume": ("o3d_selection_polygon_volume_t", False),
+              "Octree": ("o3d_octree_t", False)}
 PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage",
-            "o3d_voxelgrid_t": "PyVoxelGrid"}  # the extension's classes
+            "o3d_voxelgrid_t": "PyVoxelGrid", "o3d_lineset_t": "PyLineSet"}  # the extension's classes
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
 # changing methods that return None in Open3D.
 PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",
@@ -764,7 +775,9 @@ def py_param(p, kw, groups):
     if k == "optional_array":
         return (f"py::handle {n}", f"std::optional<std::array<double, {p['array']}>> {v};\n"
                 f'            if (!{n}.is_none()) {v} = {PY_AS[p["array"]]}({n}, "{kw}");', f"{v} ? {v}->data() : nullptr")
-    if k in ("handle", "fixed"):  # another object's lock, a frame drawn first: the Python files write those by hand
+    if k == "handle":  # another object: its handle kept alive (GIL held), locked shared for the call (py_locks)
+        return f"const {PY_TYPES[binding_methods.handle_type(p)]}& {n}", f"const auto {v} = {n}.h;", f"{v}->p"
+    if k == "fixed":  # a frame drawn first: the Python files write those by hand
         raise ValueError(f"{p['name']}: a {k} parameter is not generated for Python")
     return {"int32_t": (f"int64_t {n}", f'const int32_t {v} = int32_of({n}, "{kw}");', v),
             "double": (f"double {n}", None, n), "bool": (f"bool {n}", None, f"{n} ? 1 : 0"),
@@ -817,20 +830,26 @@ def gen_py_method(m, cls, groups):
                      "int64": "int64_t out = 0;", "size": "size_t out = 0;"}.get(m.out_kind, "int32_t out = 0;"))
         outs = ["out.data()" if m.out_kind == "array" else "&out"]
     filename = f", {path}" if path else ""
+    # The other objects' shared locks, taken with the GIL released (an object passed to its own changing method
+    # would wait for itself: not generated).
+    others = [p for p in m.params if p["kind"] == "handle"]
+    if any(binding_methods.handle_type(p) == handle for p in others) and not (m.static or m.const):
+        raise ValueError(f"{m.c}: a changing method taking another {handle} is not generated for Python")
+    locks = "".join(f"std::shared_lock<std::shared_mutex> {p['name']}_lock({p['name']}_->mutex); " for p in others)
     if m.static:
         call = f"{m.c}(" + ", ".join(outs + args) + ")"
-        body.append(f"check(nogil([&] {{ return {call}; }}){filename});")
+        body.append(f"check(nogil([&] {{ {locks}return {call}; }}){filename});")
     else:
-        call = f"{m.c}(" + ", ".join(outs + ["c_"] + args) + ")"
+        call = f"{locks}return {m.c}(" + ", ".join(outs + ["c_"] + args) + ")"
         if m.const:
             lambda_params.insert(0, "const Self& self")
-            body.append(f"locked_const(self.h, [&](const {handle}* c_) {{ return {call}; }}{filename});")
+            body.append(f"locked_const(self.h, [&](const {handle}* c_) {{ {call}; }}{filename});")
         else:
             lambda_params.insert(0, "py::object self_" if returns_self else "Self& self")
             if returns_self:
                 body.insert(0, "Self& self = self_.cast<Self&>();")
             target = "self.for_resize()" if m.c in PY_RESIZING else "self.h"
-            body.append(f"locked_mut({target}, [&]({handle}* c_) {{ return {call}; }}{filename});")
+            body.append(f"locked_mut({target}, [&]({handle}* c_) {{ {call}; }}{filename});")
     if m.new:
         body.append(f"return {'Self' if name == '__init__' else PY_TYPES[m.new]}(out);")
     elif m.out is not None:

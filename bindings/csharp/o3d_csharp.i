@@ -53,6 +53,17 @@ O3DX_CS_IN(u8, byte)
 %}
 %typemap(freearg) o3dx_in_o3d_correspondence_checker_t %{ free(tmp$argnum); %}
 
+/* arrays of handles: an array of proxies, its handles pinned as one IntPtr[] (a null element is a NULL handle);
+   the proxies are kept alive until the call returns */
+%define O3DX_HANDLES_IN(T, CLS)
+%typemap(ctype) o3dx_handles_##T "o3dx_span"
+%typemap(imtype) o3dx_handles_##T "O3dx.Span"
+%typemap(cstype) o3dx_handles_##T "CLS[]"
+%typemap(csin, pre="    var pin_$csinput = O3dx.Pin($csinput == null ? null : global::System.Array.ConvertAll($csinput, c => CLS.getCPtr(c).Handle));",
+  post="      pin_$csinput.Free();\n      global::System.GC.KeepAlive($csinput);") o3dx_handles_##T "O3dx.SpanOf(pin_$csinput, $csinput)"
+%typemap(in) o3dx_handles_##T %{ $1.p = (const T *const *)$input.p; $1.n = (size_t)$input.n; %}
+%enddef
+
 /* ---- arrays out: one copy into a new managed array ------------------------------------------ */
 %define O3DX_CS_OUT(E, CSTYPE)
 %typemap(ctype) o3dx_out_##E "o3dx_ospan"

@@ -100,6 +100,27 @@ O3DX_JAVA_ARRAY(u8, uint8_t, jbyte, byte, jbyteArray, Byte)
 %}
 %typemap(freearg) o3dx_in_o3d_correspondence_checker_t %{ free(tmp$argnum); %}
 
+/* arrays of handles: RGBDImage[] etc. -> a C array of their handles (a null element is a NULL handle) */
+%define O3DX_HANDLES_IN(T, CLS)
+%typemap(jni) o3dx_handles_##T "jlongArray"
+%typemap(jtype) o3dx_handles_##T "long[]"
+%typemap(jstype) o3dx_handles_##T "CLS[]"
+%typemap(javain) o3dx_handles_##T
+  "$javainput == null ? null : java.util.Arrays.stream($javainput).mapToLong(CLS::getCPtr).toArray()"
+%typemap(in) o3dx_handles_##T (const T **tmp = NULL) %{
+  $1.n = $input ? (size_t)(*jenv)->GetArrayLength(jenv, $input) : 0;
+  if ($1.n) {
+    size_t i;
+    jlong *ptrs = (*jenv)->GetLongArrayElements(jenv, $input, 0);
+    tmp = (const T **)malloc($1.n * sizeof *tmp);
+    for (i = 0; tmp && ptrs && i < $1.n; ++i) tmp[i] = (const T *)(intptr_t)ptrs[i];
+    if (ptrs) (*jenv)->ReleaseLongArrayElements(jenv, $input, ptrs, JNI_ABORT);
+  }
+  $1.p = tmp;
+%}
+%typemap(freearg) o3dx_handles_##T %{ free((void *)tmp$argnum); %}
+%enddef
+
 /* ---- errors: O3dException(status, message); a closed object: IllegalStateException ---------- */
 %{
 static O3DX_TLS jthrowable o3dj_thrown; /* what a Visualizer callback threw: the failed call throws it */

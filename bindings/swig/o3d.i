@@ -31,6 +31,8 @@ O3DX_ARRAY_TYPES(i32, int32_t)
 O3DX_ARRAY_TYPES(i64, int64_t)
 O3DX_ARRAY_TYPES(u8, uint8_t)
 typedef struct { const o3d_correspondence_checker_t *p; size_t n; } o3dx_in_o3d_correspondence_checker_t;
+/* an array of handles (`const T* const* name, size_t num_name`): the generated interface declares one per T */
+#define O3DX_HANDLES_TYPE(T) typedef struct { const T *const *p; size_t n; } o3dx_handles_##T;
 /* a borrowed view (read-only / writable): address, rows, bytes; valid until its owner changes */
 typedef struct { void *p; size_t rows; size_t bytes; } o3dx_view;
 typedef o3dx_view o3dx_mview;

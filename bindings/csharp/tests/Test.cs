@@ -301,6 +301,7 @@ static partial class Test
         SelectionTests(); // SelectionTest.cs
         OdometryTests(); // OdometryTest.cs
         IntegrationTests(); // IntegrationTest.cs
+        ColorMapTests(); // ColorMapTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

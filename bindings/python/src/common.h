@@ -63,6 +63,28 @@ void def_fields(py::class_<T>& cls, FieldNames names = {}) {
     });
 }
 
+/// A constructor over def_fields' properties: positional arguments fill the fields in the header's order, keywords
+/// by name (the Open3D option classes whose constructor lists exactly their fields); the rest keep `init`'s defaults.
+template <typename T>
+void def_fields_init(py::class_<T>& cls, const char* doc) {
+    cls.def(py::init([](py::args args, py::kwargs kwargs) {
+                T t;
+                py::object self = py::cast(&t, py::return_value_policy::reference);
+                std::vector<std::string> names;
+                Fields<decltype(T::o)>::each([&](const char* name, auto, auto, const char*) { names.push_back(name); });
+                if (args.size() > names.size()) throw py::type_error("too many positional arguments");
+                for (size_t i = 0; i < args.size(); ++i) py::setattr(self, names[i].c_str(), args[i]);
+                for (auto kv : kwargs) {
+                    const std::string name = py::str(kv.first);
+                    if (std::find(names.begin(), names.end(), name) == names.end())
+                        throw py::type_error("unexpected keyword argument '" + name + "'");
+                    py::setattr(self, name.c_str(), kv.second);
+                }
+                return t;
+            }),
+            doc);
+}
+
 /// Copy the fields `names` of `from` into `to`.
 template <typename C>
 void copy_fields(C& to, const C& from, FieldNames names) {

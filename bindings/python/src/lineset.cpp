@@ -114,15 +114,7 @@ void define_lineset(py::module_& m) {
                     return o3d_lineset_create_from_axis_aligned_bounding_box(out, lo.data(), hi.data());
                 });
             },
-            py::arg("box"), "The 12 edges of an AxisAlignedBoundingBox.")
-        .def_static(
-            "create_from_triangle_mesh",
-            [](const PyTriangleMesh& mesh) {
-                o3d_lineset_t* out = nullptr;
-                locked_const(mesh.h, [&](const o3d_trianglemesh_t* me) { return o3d_lineset_create_from_triangle_mesh(&out, me); });
-                return PyLineSet(out);
-            },
-            py::arg("mesh"), "The mesh's unique edges, each once, on its vertices.");
+            py::arg("box"), "The 12 edges of an AxisAlignedBoundingBox.");
     def_array(cls, "points", O3D_LINESET_POINTS, "(N, 3) float64 points (read-only view; assign to replace).", true);
     def_array(cls, "colors", O3D_LINESET_COLORS, "(M, 3) float64 line colors in [0, 1] (read-only view).", true);
     def_array(cls, "lines", O3D_LINESET_LINES, "(M, 2) int32 point indices (read-only view).", true);

@@ -14,6 +14,7 @@ void define_visualizer(py::module_& m);
 void define_selection(py::module_& m);
 void define_odometry(py::module_& m);
 void define_integration(py::module_& m);
+void define_color_map(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -58,4 +59,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_selection(m);
     o::define_odometry(m);
     o::define_integration(m);
+    o::define_color_map(m);
 }

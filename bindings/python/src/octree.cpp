@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "geometry_types.h"
+#include "generated/octree_methods.h"
 
 namespace o3dpy {
 namespace {
@@ -31,17 +31,6 @@ void define_octree(py::module_& m) {
                 return PyOctree(raw);
             }),
             py::arg("max_depth"), "An empty octree of max_depth >= 1.")
-        .def(
-            "convert_from_point_cloud",
-            [](PyOctree& self, const PyPointCloud& point_cloud, double size_expand) {
-                CloudPtr c = point_cloud.h;
-                locked_mut(self.h, [&](o3d_octree_t* o) {
-                    std::shared_lock<std::shared_mutex> lock(c->mutex);
-                    return o3d_octree_convert_from_point_cloud(o, c->p, size_expand);
-                });
-            },
-            py::arg("point_cloud"), py::arg("size_expand") = 0.01,
-            "Rebuild from a cloud: the root is the cloud's bounding cube enlarged by size_expand (a fraction).")
         .def_property_readonly("max_depth",
                                [](const PyOctree& self) {
                                    int32_t d = 0;
@@ -60,13 +49,6 @@ void define_octree(py::module_& m) {
                                    root(self, nullptr, &s, nullptr);
                                    return s;
                                })
-        .def("_num_leaf_nodes",
-             [](const PyOctree& self) {
-                 size_t n = 0;
-                 locked_const(self.h, [&](const o3d_octree_t* o) { return o3d_octree_num_leaf_nodes(&n, o); });
-                 return n;
-             },
-             "Number of non-empty leaves.")
         .def("is_empty",
              [](const PyOctree& self) {
                  size_t n = 0;
@@ -94,6 +76,7 @@ void define_octree(py::module_& m) {
                                       vec3_to_array(info.origin), info.size, info.depth, info.child_index);
             },
             py::arg("point"), "None, or (indices, color, origin, size, depth, child_index) of the leaf holding point.");
+    def_octree_methods(cls);
 }
 
 }  // namespace o3dpy

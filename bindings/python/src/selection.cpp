@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // o3d.visualization.SelectionPolygonVolume and read_selection_polygon_volume over selection.h. Open3D names
 // the orthogonal axis by a string ("X", "Y", "Z"); the C API by O3D_AXIS_*.
-#include "geometry_types.h"
+#include "generated/selection_methods.h"
 
 namespace o3dpy {
 namespace {
@@ -71,10 +71,11 @@ void with_cloud(const PyVolume& v, const PyPointCloud& cloud, F&& f) {
 }  // namespace
 
 void define_selection(py::module_& m) {
-    py::class_<PyVolume>(m, "SelectionPolygonVolume",
+    py::class_<PyVolume> cls(m, "SelectionPolygonVolume",
                          "A prism: a polygon (bounding_polygon) across one axis (orthogonal_axis: \"X\", \"Y\" or "
-                         "\"Z\"), from axis_min to axis_max along it. Cropping keeps what lies inside.")
-        .def(py::init(&new_volume), "An empty volume (axis Y, range [0, 0], no polygon).")
+                         "\"Z\"), from axis_min to axis_max along it. Cropping keeps what lies inside.");
+    def_selection_polygon_volume_methods(cls);
+    cls.def(py::init(&new_volume), "An empty volume (axis Y, range [0, 0], no polygon).")
         .def_property("orthogonal_axis", &axis_name, &set_axis, "\"X\", \"Y\" or \"Z\".")
         .def_property(
             "axis_min", [](const PyVolume& v) { return get_double(v, &o3d_selection_polygon_volume_get_axis_min); },
@@ -91,16 +92,6 @@ void define_selection(py::module_& m) {
         .def_property("bounding_polygon", &polygon, &set_polygon,
                       "The corners (Vector3dVector); the coordinate along the orthogonal axis is ignored.")
         .def(
-            "crop_point_cloud",
-            [](const PyVolume& v, const PyPointCloud& cloud) {
-                o3d_pointcloud_t* out = nullptr;
-                with_cloud(v, cloud, [&](const o3d_selection_polygon_volume_t* p, const o3d_pointcloud_t* pc) {
-                    return o3d_selection_polygon_volume_crop_point_cloud(&out, p, pc);
-                });
-                return PyPointCloud(out);
-            },
-            py::arg("input"), "The points inside, with their normals and colors.")
-        .def(
             "crop_in_polygon",
             [](const PyVolume& v, const PyPointCloud& cloud) {
                 std::vector<int32_t> indices;
@@ -113,18 +104,7 @@ void define_selection(py::module_& m) {
                 });
                 return int_list(indices.data(), indices.size());
             },
-            py::arg("input"), "Indices of the points inside, ascending.")
-        .def(
-            "crop_triangle_mesh",
-            [](const PyVolume& v, const PyTriangleMesh& mesh) {
-                o3d_trianglemesh_t* out = nullptr;
-                std::shared_lock<std::shared_mutex> volume_lock(v.h->mutex);
-                locked_const(mesh.h, [&](const o3d_trianglemesh_t* mp) {
-                    return o3d_selection_polygon_volume_crop_triangle_mesh(&out, v.h->p, mp);
-                });
-                return PyTriangleMesh(out);
-            },
-            py::arg("input"), "The triangles whose three vertices are inside, with the vertices they use.");
+            py::arg("input"), "Indices of the points inside, ascending.");
     m.def(
         "read_selection_polygon_volume",
         [](py::handle filename) {

@@ -3,17 +3,10 @@
 // is completed in o3d/geometry.py from _get_voxel_arrays().
 #include <vector>
 
-#include "geometry_types.h"
+#include "generated/voxelgrid_methods.h"
 
 namespace o3dpy {
 namespace {
-
-template <typename F>
-PyVoxelGrid make(F&& f) {
-    o3d_voxelgrid_t* out = nullptr;
-    f(&out);
-    return PyVoxelGrid(out);
-}
 
 size_t num_voxels(const PyVoxelGrid& self) {
     size_t n = 0;
@@ -31,56 +24,8 @@ void declare_voxelgrid(py::module_& m) {
 
 void define_voxelgrid(py::module_& m) {
     auto cls = static_cast<py::class_<PyVoxelGrid>>(m.attr("VoxelGrid"));
-    cls.def_static(
-           "create_from_point_cloud",
-           [](const PyPointCloud& input, double voxel_size) {
-               return make([&](o3d_voxelgrid_t** out) {
-                   locked_const(input.h, [&](const o3d_pointcloud_t* pc) {
-                       return o3d_voxelgrid_create_from_point_cloud(out, pc, voxel_size);
-                   });
-               });
-           },
-           py::arg("input"), py::arg("voxel_size"),
-           "Voxels holding at least one point; origin = min bound - voxel_size / 2; colors are the mean point color.")
-        .def_static(
-            "create_from_point_cloud_within_bounds",
-            [](const PyPointCloud& input, double voxel_size, py::handle min_bound, py::handle max_bound) {
-                auto lo = as_vec3(min_bound, "min_bound");
-                auto hi = as_vec3(max_bound, "max_bound");
-                return make([&](o3d_voxelgrid_t** out) {
-                    locked_const(input.h, [&](const o3d_pointcloud_t* pc) {
-                        return o3d_voxelgrid_create_from_point_cloud_within_bounds(out, pc, voxel_size, lo.data(),
-                                                                                   hi.data());
-                    });
-                });
-            },
-            py::arg("input"), py::arg("voxel_size"), py::arg("min_bound"), py::arg("max_bound"),
-            "As create_from_point_cloud on the grid starting at min_bound; points outside the bounds are ignored.")
-        .def_static(
-            "create_from_triangle_mesh",
-            [](const PyTriangleMesh& input, double voxel_size) {
-                return make([&](o3d_voxelgrid_t** out) {
-                    locked_const(input.h, [&](const o3d_trianglemesh_t* me) {
-                        return o3d_voxelgrid_create_from_triangle_mesh(out, me, voxel_size);
-                    });
-                });
-            },
-            py::arg("input"), py::arg("voxel_size"), "Voxels intersecting at least one triangle.")
-        .def_property_readonly("voxel_size",
-                               [](const PyVoxelGrid& self) {
-                                   double v = 0;
-                                   locked_const(self.h, [&](const o3d_voxelgrid_t* g) {
-                                       return o3d_voxelgrid_get_voxel_size(&v, g);
-                                   });
-                                   return v;
-                               })
-        .def_property_readonly("origin",
-                               [](const PyVoxelGrid& self) {
-                                   double o[3];
-                                   locked_const(self.h, [&](const o3d_voxelgrid_t* g) { return o3d_voxelgrid_get_origin(o, g); });
-                                   return vec3_to_array(o);
-                               })
-        .def("has_voxels",
+    def_voxel_grid_methods(cls);
+    cls.def("has_voxels",
              [](const PyVoxelGrid& self) {
                  int32_t has = 0;
                  locked_const(self.h, [&](const o3d_voxelgrid_t* g) {

@@ -5,6 +5,7 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/camera.hpp"
+#include "o3dpp/color_map.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/feature.hpp"

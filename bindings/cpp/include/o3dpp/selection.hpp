@@ -17,7 +17,7 @@
 namespace o3dpp {
 
 /// @brief The polygon lies across get_orthogonal_axis(), the prism runs along it over
-/// [get_axis_min(), get_axis_max()]. read_json, the axis/range setters and the crops are generated
+/// [get_axis_min(), get_axis_max()]. read_json, the axis and range accessors and the crops are generated
 /// (detail::SelectionPolygonVolumeCalls); what is written here returns the enum or variable-length arrays.
 class SelectionPolygonVolume
     : public Owner<SelectionPolygonVolume, o3d_selection_polygon_volume_t, &o3d_selection_polygon_volume_destroy>,
@@ -30,9 +30,6 @@ public:
     /// @brief Take ownership of `owned` (must not be NULL).
     explicit SelectionPolygonVolume(o3d_selection_polygon_volume_t* owned) : Owner(owned) {}
 
-    Axis get_orthogonal_axis() const {
-        return static_cast<Axis>(query(&o3d_selection_polygon_volume_get_orthogonal_axis));
-    }
     /// @brief The corners in order; their coordinate along the orthogonal axis is ignored.
     std::vector<Vec3> get_bounding_polygon() const {
         return copy_out<Vec3>(&o3d_selection_polygon_volume_get_bounding_polygon);

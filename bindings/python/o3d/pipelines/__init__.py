@@ -1,5 +1,6 @@
-"""o3d.pipelines: registration (ICP, global registration, pose graphs), odometry (RGB-D) and integration (TSDF
-volumes)."""
+"""o3d.pipelines: registration (ICP, global registration, pose graphs), odometry (RGB-D), integration (TSDF
+volumes) and color_map (colour-map optimization)."""
 from . import registration  # noqa: F401
 from . import odometry  # noqa: F401
 from . import integration  # noqa: F401
+from . import color_map  # noqa: F401

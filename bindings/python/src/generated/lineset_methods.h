@@ -32,6 +32,15 @@ void def_line_set_methods(py::class_<Self, Bases...>& cls) {
             return self_;
         },
         py::arg("transformation"), "Apply a row-major 4x4 transform to the points. Returns self.");
+    cls.def_static(
+        "create_from_triangle_mesh",
+        [](const PyTriangleMesh& mesh) {
+            const auto mesh_ = mesh.h;
+            o3d_lineset_t* out = nullptr;
+            check(nogil([&] { std::shared_lock<std::shared_mutex> mesh_lock(mesh_->mutex); return o3d_lineset_create_from_triangle_mesh(&out, mesh_->p); }));
+            return PyLineSet(out);
+        },
+        py::arg("mesh"), "The mesh's unique edges (each once), on its vertices.");
 }
 
 }  // namespace o3dpy

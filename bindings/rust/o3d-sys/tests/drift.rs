@@ -155,6 +155,8 @@ fn every_header_struct_has_the_same_fields_in_order() {
     assert_eq!(
         names.iter().copied().collect::<BTreeSet<_>>(),
         [
+            "o3d_color_map_non_rigid_options",
+            "o3d_color_map_rigid_options",
             "o3d_correspondence_checker",
             "o3d_depth_to_cloud_options",
             "o3d_fgr_options",

@@ -296,6 +296,31 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_odometry_options_t, depth_diff_max)", offset_of!(o3d_odometry_options_t, depth_diff_max), 8),
         ("offsetof(o3d_odometry_options_t, depth_min)", offset_of!(o3d_odometry_options_t, depth_min), 16),
         ("offsetof(o3d_odometry_options_t, depth_max)", offset_of!(o3d_odometry_options_t, depth_max), 24),
+        ("sizeof(o3d_color_map_rigid_options_t)", size_of::<o3d_color_map_rigid_options_t>(), 64),
+        ("_Alignof(o3d_color_map_rigid_options_t)", align_of::<o3d_color_map_rigid_options_t>(), 8),
+        (
+            "offsetof(o3d_color_map_rigid_options_t, maximum_allowable_depth)",
+            offset_of!(o3d_color_map_rigid_options_t, maximum_allowable_depth),
+            8,
+        ),
+        (
+            "offsetof(o3d_color_map_rigid_options_t, num_threads)",
+            offset_of!(o3d_color_map_rigid_options_t, num_threads),
+            44,
+        ),
+        ("offsetof(o3d_color_map_rigid_options_t, progress)", offset_of!(o3d_color_map_rigid_options_t, progress), 48),
+        ("sizeof(o3d_color_map_non_rigid_options_t)", size_of::<o3d_color_map_non_rigid_options_t>(), 80),
+        ("_Alignof(o3d_color_map_non_rigid_options_t)", align_of::<o3d_color_map_non_rigid_options_t>(), 8),
+        (
+            "offsetof(o3d_color_map_non_rigid_options_t, maximum_allowable_depth)",
+            offset_of!(o3d_color_map_non_rigid_options_t, maximum_allowable_depth),
+            24,
+        ),
+        (
+            "offsetof(o3d_color_map_non_rigid_options_t, user_data)",
+            offset_of!(o3d_color_map_non_rigid_options_t, user_data),
+            72,
+        ),
         // Callback pointers are plain (nullable) function pointers.
         ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
         ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
@@ -508,6 +533,19 @@ fn rgbd_and_depth_options_init_accept_rust_sizes_and_fill_defaults() {
         assert_eq!(st, O3D_OK, "{}", last_message());
         assert_eq!(o.struct_size as usize, size_of::<o3d_odometry_options_t>());
         assert_eq!((o.depth_diff_max, o.depth_min, o.depth_max), (0.03, 0.0, 4.0));
+
+        let mut c: o3d_color_map_rigid_options_t = std::mem::zeroed();
+        let st = o3d_color_map_rigid_options_init(&mut c, size_of::<o3d_color_map_rigid_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!((c.struct_size as usize, c.maximum_iteration), (size_of::<o3d_color_map_rigid_options_t>(), 300));
+
+        let mut n: o3d_color_map_non_rigid_options_t = std::mem::zeroed();
+        let st = o3d_color_map_non_rigid_options_init(&mut n, size_of::<o3d_color_map_non_rigid_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(
+            (n.struct_size as usize, n.number_of_vertical_anchors),
+            (size_of::<o3d_color_map_non_rigid_options_t>(), 16)
+        );
     }
 }
 

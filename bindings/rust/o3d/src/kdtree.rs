@@ -96,22 +96,10 @@ impl fmt::Debug for SearchResultRef {
 }
 
 impl KDTreeFlann {
-    /// Build a tree over the points of `cloud` (copied).
-    pub fn new(cloud: &PointCloud) -> Result<KDTreeFlann> {
-        // SAFETY: valid cloud handle.
-        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_pointcloud(out, cloud.as_raw()) })
-    }
-
     /// Build a tree over `points` (copied). Non-finite coordinates → Err.
     pub fn from_points(points: &[[f64; 3]]) -> Result<KDTreeFlann> {
         // SAFETY: points.len() rows of 3 contiguous doubles.
         new_tree(|out| unsafe { sys::o3d_kdtree_create_from_points(out, points.as_ptr().cast(), points.len()) })
-    }
-
-    /// Build a tree over the descriptors of `feature` (copied), of dimension `feature.dimension()`.
-    pub fn from_feature(feature: &Feature) -> Result<KDTreeFlann> {
-        // SAFETY: valid feature handle.
-        new_tree(|out| unsafe { sys::o3d_kdtree_create_from_feature(out, feature.as_raw()) })
     }
 
     /// Build a tree over `data.len() / dimension` points of `dimension` values each, one after the

@@ -40,6 +40,7 @@ pub use o3d_sys as sys;
 mod array;
 mod boundingbox;
 pub mod camera;
+pub mod color_map;
 mod error;
 mod feature;
 mod hull;

@@ -33,14 +33,6 @@ impl SelectionPolygonVolume {
         new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_read_json(out, path.as_ptr()) })
     }
 
-    /// The axis the prism runs along.
-    pub fn get_orthogonal_axis(&self) -> Result<Axis> {
-        let mut out = 0;
-        // SAFETY: a valid handle and an out-pointer.
-        check(unsafe { sys::o3d_selection_polygon_volume_get_orthogonal_axis(&mut out, self.as_raw()) })?;
-        Axis::from_raw(out)
-    }
-
     /// The polygon's corners, in order.
     pub fn get_bounding_polygon(&self) -> Result<Vec<[f64; 3]>> {
         // SAFETY: a valid handle; `out` holds `cap` rows of 3 doubles.

@@ -23,6 +23,12 @@ public:
     static Self read_json(const std::string& path) {
         return Self::adopt([&](auto** out) { return o3d_selection_polygon_volume_read_json(out, path.c_str()); });
     }
+    /// @brief SelectionPolygonVolume.orthogonal_axis.
+    Axis get_orthogonal_axis() const {
+        int32_t out = 0;
+        check(o3d_selection_polygon_volume_get_orthogonal_axis(&out, self().get()));
+        return static_cast<Axis>(out);
+    }
     /// @brief Set the orthogonal axis: the prism runs along it, the polygon lies across it.
     Self& set_orthogonal_axis(Axis axis) {
         return self().done(o3d_selection_polygon_volume_set_orthogonal_axis(self().get(), static_cast<int32_t>(axis)));

@@ -3,11 +3,21 @@
 // from capi/include/o3d/*.h.
 
 impl KDTreeFlann {
+    /// Build a tree over the points of `pc` (copied). An empty cloud gives an empty tree.
+    pub fn new(pc: &PointCloud) -> Result<KDTreeFlann> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::kdtree::new_tree(|out| unsafe { sys::o3d_kdtree_create_from_pointcloud(out, pc.as_raw()) })
+    }
     /// Number of indexed points.
     pub fn len(&self) -> Result<usize> {
         let mut out = 0;
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_kdtree_size(&mut out, self.as_raw()) }).map(|()| out)
+    }
+    /// A KD-tree over the descriptors of `feature` (copied), of dimension `o3d_feature_dimension`.
+    pub fn from_feature(feature: &Feature) -> Result<KDTreeFlann> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::kdtree::new_tree(|out| unsafe { sys::o3d_kdtree_create_from_feature(out, feature.as_raw()) })
     }
     /// Dimension of the indexed points (3 for trees over clouds).
     pub fn dimension(&self) -> Result<usize> {

@@ -21,6 +21,12 @@ impl SelectionPolygonVolume {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::selection::new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_create(out) })
     }
+    /// SelectionPolygonVolume.orthogonal_axis.
+    pub fn get_orthogonal_axis(&self) -> Result<Axis> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_selection_polygon_volume_get_orthogonal_axis(&mut out, self.as_raw()) }).and_then(|()| Axis::from_raw(out))
+    }
     /// Set the orthogonal axis: the prism runs along it, the polygon lies across it.
     pub fn set_orthogonal_axis(&mut self, axis: Axis) -> Result<()> {
         // SAFETY: a valid handle; pointers to values that live for the call.

@@ -18,10 +18,6 @@ int checked_unit_resolution(int resolution) {
     return resolution;
 }
 
-bool key_less(const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-}
-
 }  // namespace
 
 ScalableTSDFVolume::ScalableTSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type,
@@ -64,7 +60,7 @@ void ScalableTSDFVolume::integrate(const geometry::RGBDImage& image,
                     }
         }
     }
-    std::sort(keys.begin(), keys.end(), key_less);
+    std::sort(keys.begin(), keys.end(), detail::grid_less);
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     integrate_into(image, intrinsic, extrinsic, keys);
 }

@@ -66,7 +66,6 @@ void TSDFVolume::check_frame(const geometry::RGBDImage& image, const camera::Pin
 
 void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                                 const Eigen::Matrix4d& extrinsic, const std::vector<Eigen::Vector3i>& keys) {
-    check_frame(image, intrinsic, extrinsic);
     if (!same_intrinsic(intrinsic, ray_intrinsic_) || ray_x2_.empty()) {
         ray_x2_.resize(size_t(intrinsic.width));
         ray_y2_.resize(size_t(intrinsic.height));

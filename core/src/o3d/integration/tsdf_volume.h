@@ -52,7 +52,7 @@ public:
 protected:
     TSDFVolume(double voxel_length, double sdf_trunc, ColorType color_type, int block_side,
                const Eigen::Vector3d& origin);
-    /// @brief Checks the frame, then fuses it into the blocks at `keys` (created when absent).
+    /// @brief Fuses a frame check_frame accepted into the blocks at `keys` (created when absent).
     void integrate_into(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                         const Eigen::Matrix4d& extrinsic, const std::vector<Eigen::Vector3i>& keys);
     /// @brief The checks integrate_into makes first; throws InvalidArgument.

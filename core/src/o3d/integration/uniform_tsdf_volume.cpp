@@ -40,6 +40,7 @@ void UniformTSDFVolume::reset() {
 
 void UniformTSDFVolume::integrate(const geometry::RGBDImage& image, const camera::PinholeCameraIntrinsic& intrinsic,
                                   const Eigen::Matrix4d& extrinsic) {
+    check_frame(image, intrinsic, extrinsic);
     integrate_into(image, intrinsic, extrinsic, {Eigen::Vector3i::Zero()});
 }
 

@@ -49,7 +49,7 @@ std::vector<const VoxelBlock*> BlockMap::sorted_blocks() const {
     out.reserve(blocks_.size());
     for (const auto& entry : blocks_) out.push_back(entry.second.get());
     std::sort(out.begin(), out.end(), [](const VoxelBlock* a, const VoxelBlock* b) {
-        return std::lexicographical_compare(a->key.data(), a->key.data() + 3, b->key.data(), b->key.data() + 3);
+        return grid_less(a->key, b->key);
     });
     return out;
 }

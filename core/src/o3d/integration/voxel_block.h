@@ -15,6 +15,11 @@
 
 namespace o3d::integration::detail {
 
+/// @brief Grid order of block keys and voxel indices: x, then y, then z.
+inline bool grid_less(const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
+    return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : a.z() < b.z();
+}
+
 struct VoxelBlock {
     Eigen::Vector3i key;
     std::vector<float> tsdf;              ///< in [-1, 1]: signed distance / sdf_trunc

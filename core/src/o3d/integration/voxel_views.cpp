@@ -27,8 +27,7 @@ std::vector<geometry::Voxel> shown_voxels(const detail::BlockMap& map) {
     }
     if (map.size() > 1)  // blocks interleave in grid order
         std::sort(voxels.begin(), voxels.end(), [](const geometry::Voxel& a, const geometry::Voxel& b) {
-            return std::lexicographical_compare(a.grid_index.data(), a.grid_index.data() + 3, b.grid_index.data(),
-                                                b.grid_index.data() + 3);
+            return detail::grid_less(a.grid_index, b.grid_index);
         });
     return voxels;
 }

@@ -2,6 +2,7 @@
 #include "o3d/registration/estimation_colored.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <string>
 
 #include "o3d/kdtree/query_order.h"
@@ -85,8 +86,17 @@ std::vector<Eigen::Vector3d> compute_color_gradients(const geometry::PointCloud&
                 ata.noalias() += a * a.transpose();
                 atb += a * (intensities[static_cast<size_t>(idx[j])] - intensities[k]);
             }
+            const double spread = ata.trace();  // sum of squared offsets: the neighbourhood's size
             const Eigen::Vector3d c = static_cast<double>(found - 1) * nk;
             ata.noalias() += c * c.transpose();
+            // Neighbours on a line through p leave the gradient undetermined across it: the solve then returns
+            // gradients thousands of times too large, and one such target point can throw colored ICP off (seen
+            // on voxel-down-sampled fragments). Such a point keeps a zero gradient, as one with too few
+            // neighbours does. The smallest eigenvalue against the neighbourhood's spread says how far from a
+            // line the neighbours are (LDLT pivots do not: they stay well above it).
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+            eigen.computeDirect(ata, Eigen::EigenvaluesOnly);
+            if (!(eigen.eigenvalues()(0) > 1e-6 * spread)) continue;
             const Eigen::Vector3d g = ata.ldlt().solve(atb);
             if (g.allFinite()) gradients[k] = g;
         }

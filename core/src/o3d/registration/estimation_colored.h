@@ -25,7 +25,8 @@ std::vector<double> color_intensities(const std::vector<Eigen::Vector3d>& colors
 /// @brief Intensity gradient of each target point within its tangent plane (Open3D's
 /// InitializePointCloudForColoredICP, 0.20): the least-squares g with g . (p_j - p) = I_j - I over the
 /// neighbours j, plus the constraint g . n = 0 weighted by the neighbour count. Neighbours come from a
-/// hybrid search (`radius`, `max_nn`, the point itself included); fewer than 4 give a zero gradient.
+/// hybrid search (`radius`, `max_nn`, the point itself included); fewer than 4, or neighbours on a line
+/// (the gradient across it undetermined), give a zero gradient.
 /// `tree` indexes target.points. Independent of num_threads (0 = default).
 /// @throws o3d::InvalidArgument when `target` lacks colors or normals, the tree does not match, or the
 /// search parameters are not > 0.

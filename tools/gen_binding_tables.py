@@ -96,7 +96,7 @@ PY_ENUMS = {
     "o3d_image_filter_type": None, "o3d_image_convert": [("ColorToIntensityConversionType",) * 2],
     "o3d_intrinsic_preset": [("IntrinsicPreset", "PinholeCameraIntrinsicParameters")],
     "o3d_simplification_contraction": None, "o3d_filter_scope": None,
-    "o3d_tsdf_volume_color_type": [("TSDFVolumeColorType",) * 2],
+    "o3d_tsdf_volume_color_type": [("TSDFVolumeColorType",) * 2], "o3d_reconstruction_stage": None,
 }
 PY_VARIANTS = {
     "O3D_MESH_SHADE_FLAT": "FlatShade", "O3D_MESH_SHADE_SMOOTH": "SmoothShade", "O3D_IMAGE_FILTER_SOBEL3_DX": "Sobel3dx",

@@ -29,11 +29,7 @@ void to_core(const C& o, cm::OptimizerOption& out) {
     out.image_boundary_margin = o.image_boundary_margin;
     out.invisible_vertex_color_knn = o.invisible_vertex_color_knn;
     out.num_threads = o.num_threads;
-    if (o.progress) {
-        const o3d_progress_callback callback = o.progress;
-        void* const user_data = o.user_data;
-        out.progress = [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
-    }
+    out.progress = o3d::capi::to_progress(o.progress, o.user_data);
 }
 
 /// The images the handles hold, borrowed for the call (no copy).

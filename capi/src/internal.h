@@ -5,6 +5,7 @@
 /// error, argument checks, versioned options structs, and the handle structs shared across modules.
 /// Nothing here is exported.
 #include <cstring>
+#include <functional>
 #include <new>
 #include <string>
 #include <utility>
@@ -185,6 +186,12 @@ void require_finite(double x, const char* name);
 o3d::kdtree::SearchParam to_search_param(const o3d_search_param_t* param);
 /// @brief Validate a per-call thread count (0 = library default, negative is invalid).
 int to_num_threads(int32_t num_threads);
+
+/// @brief A core progress function over a C callback (non-zero return = cancel); empty when `callback` is NULL.
+inline std::function<bool(double)> to_progress(o3d_progress_callback callback, void* user_data) {
+    if (!callback) return {};
+    return [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
+}
 /// @brief A row-major 4x4 (16 doubles) as a matrix; NULL means identity. Non-finite entries are
 /// rejected with InvalidArgument naming `name`. (Defined in registration.cpp.)
 Eigen::Matrix4d read_transform(const double* m, const char* name);

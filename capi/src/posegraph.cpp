@@ -120,11 +120,7 @@ reg::GlobalOptimizationOptions to_core(const o3d_global_optimization_options_t& 
     out.option.preference_loop_closure = o.preference_loop_closure;
     out.option.reference_node = o.reference_node;
     out.num_threads = o3d::capi::to_num_threads(o.num_threads);
-    if (o.progress) {
-        const o3d_progress_callback callback = o.progress;
-        void* const user_data = o.user_data;
-        out.progress = [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
-    }
+    out.progress = o3d::capi::to_progress(o.progress, o.user_data);
     return out;
 }
 

@@ -63,11 +63,7 @@ reg::IcpOptions to_core(const o3d_icp_options_t& o) {
     out.criteria.relative_rmse = o.relative_rmse;
     out.criteria.max_iteration = o.max_iteration;
     out.num_threads = o.num_threads;
-    if (o.progress) {
-        const o3d_progress_callback callback = o.progress;
-        void* const user_data = o.user_data;
-        out.progress = [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
-    }
+    out.progress = o3d::capi::to_progress(o.progress, o.user_data);
     return out;
 }
 

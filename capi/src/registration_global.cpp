@@ -91,10 +91,6 @@ reg::CorrespondenceSet to_corres(const int32_t* corres, size_t n) {
     return out;
 }
 
-std::function<bool(double)> to_progress(o3d_progress_callback callback, void* user_data) {
-    if (!callback) return {};
-    return [callback, user_data](double fraction) { return callback(fraction, user_data) == 0; };
-}
 
 reg::RansacOptions to_core(const o3d_ransac_options_t& o) {
     reg::RansacOptions out;
@@ -111,7 +107,7 @@ reg::RansacOptions to_core(const o3d_ransac_options_t& o) {
     out.criteria.confidence = o.confidence;
     if (o.use_seed) out.seed = o.seed;
     out.num_threads = o3d::capi::to_num_threads(o.num_threads);
-    out.progress = to_progress(o.progress, o.user_data);
+    out.progress = o3d::capi::to_progress(o.progress, o.user_data);
     return out;
 }
 
@@ -127,7 +123,7 @@ reg::FastGlobalRegistrationOption to_core(const o3d_fgr_options_t& o) {
     out.tuple_test = o.tuple_test != 0;
     if (o.use_seed) out.seed = o.seed;
     out.num_threads = o3d::capi::to_num_threads(o.num_threads);
-    out.progress = to_progress(o.progress, o.user_data);
+    out.progress = o3d::capi::to_progress(o.progress, o.user_data);
     return out;
 }
 

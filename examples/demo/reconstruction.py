@@ -1,9 +1,10 @@
-"""A short stretch of RGB-D reconstruction, as the paper's system starts it: RGB-D odometry between neighbouring
-frames, the poses chained, every frame fused into a ScalableTSDFVolume, and the mesh extracted and rendered.
+"""A short stretch of the paper's scene reconstruction system (o3d.pipelines.reconstruction, Open3D's
+reconstruction_system): two fragments made by RGB-D odometry, loop closures and pose graphs, registered and refined
+by colored ICP, every frame integrated into one TSDF, and the mesh rendered.
 
 The frames are the shared living-room sequence when it is beside the checkout ($O3D_TEST_DATA or ../shared/data),
-else frames synthesized here by ray casting a textured room with a ball in it (exact colour and depth).
-Written as it would be for Open3D; only the import differs.
+else frames synthesized here by ray casting a textured room with a ball in it (exact colour and depth), written to a
+dataset folder as PNG files. The config is Open3D's reconstruction-system JSON layout.
 """
 import os
 
@@ -14,15 +15,20 @@ import o3d
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def shared_sequence(n):
+def shared_sequence(n, folder):
+    """The first n shared frames linked (not copied) into folder/image and folder/depth; None when absent."""
     root = os.environ.get("O3D_TEST_DATA") or os.path.join(HERE, "..", "..", "..", "shared", "data")
-    folder = os.path.join(root, "livingroom1_clean_micro")
-    if not os.path.isfile(os.path.join(folder, "depth", "00000.png")):
+    source = os.path.join(root, "livingroom1_clean_micro")
+    if not os.path.isfile(os.path.join(source, "depth", "00000.png")):
         return None
-    intrinsic = o3d.camera.PinholeCameraIntrinsic(o3d.camera.PinholeCameraIntrinsicParameters.PrimeSenseDefault)
-    frames = [(o3d.io.read_image(os.path.join(folder, "image", f"{i:05d}.jpg")),
-               o3d.io.read_image(os.path.join(folder, "depth", f"{i:05d}.png"))) for i in range(n)]
-    return "the shared living-room sequence", intrinsic, frames, 1000.0
+    for sub, ext in (("image", "jpg"), ("depth", "png")):
+        os.makedirs(os.path.join(folder, sub), exist_ok=True)
+        for i in range(n):
+            link = os.path.join(folder, sub, f"{i:05d}.{ext}")
+            if not os.path.lexists(link):
+                os.symlink(os.path.abspath(os.path.join(source, sub, f"{i:05d}.{ext}")), link)
+    # Open3D's defaults (PrimeSense intrinsic, depth in millimetres, 3 m), two fragments.
+    return "the shared living-room sequence", {"path_dataset": folder, "n_frames_per_fragment": n // 2}
 
 
 def look_at(eye, target, up=(0.0, 0.0, 1.0)):
@@ -55,57 +61,58 @@ def ray_cast_room(eye, directions):
     return t, colour
 
 
-def synthesized_sequence(n):
+def synthesized_sequence(n, folder):
+    """n frames circling the room, written to folder/image and folder/depth (millimetres) with the intrinsic."""
     width, height, f = 320, 240, 260.0
-    intrinsic = o3d.camera.PinholeCameraIntrinsic(width, height, f, f, 159.5, 119.5)
     u, v = np.meshgrid(np.arange(width), np.arange(height))
     rays = np.c_[((u - 159.5) / f).ravel(), ((v - 119.5) / f).ravel(), np.ones(u.size)]
-    frames = []
+    for sub in ("image", "depth"):
+        os.makedirs(os.path.join(folder, sub), exist_ok=True)
+    for i, extrinsic in enumerate(synthesized_extrinsics(n)):
+        eye = -extrinsic[:3, :3].T @ extrinsic[:3, 3]
+        t, colour = ray_cast_room(eye, rays @ extrinsic[:3, :3])  # camera rays (unit z) turned into the room
+        o3d.io.write_image(os.path.join(folder, "image", f"{i:05d}.png"),
+                           o3d.geometry.Image(colour.reshape(height, width, 3).astype(np.uint8)))
+        o3d.io.write_image(os.path.join(folder, "depth", f"{i:05d}.png"),
+                           o3d.geometry.Image(np.round(t * 1000.0).reshape(height, width).astype(np.uint16)))
+    intrinsic_path = os.path.join(folder, "intrinsic.json")
+    o3d.io.write_pinhole_camera_intrinsic(intrinsic_path,
+                                          o3d.camera.PinholeCameraIntrinsic(width, height, f, f, 159.5, 119.5))
+    # The room is larger than the living room: a 4.5 m depth range sees its far wall; 1 cm TSDF voxels.
+    return "frames o3d synthesized by ray casting a room", {
+        "path_dataset": folder, "path_intrinsic": intrinsic_path, "depth_max": 4.5, "tsdf_cubic_size": 5.12,
+        "n_frames_per_fragment": n // 2}
+
+
+def synthesized_extrinsics(n):
+    """World-to-camera poses of the synthesized frames: an arc looking across the room."""
+    poses = []
     for i in range(n):
         angle = np.radians(-15 + 30 * i / max(n - 1, 1))
         eye = np.array([1.6 * np.cos(angle) - 0.1, 1.0 * np.sin(angle), 1.5])
-        extrinsic = look_at(eye, [-1.5, 0.3 * np.sin(angle), 0.7])
-        t, colour = ray_cast_room(eye, rays @ extrinsic[:3, :3])  # camera rays (unit z) turned into the room
-        frames.append((o3d.geometry.Image(colour.reshape(height, width, 3).astype(np.uint8)),
-                       o3d.geometry.Image(t.reshape(height, width).astype(np.float32))))
-    return "frames o3d synthesized by ray casting a room", intrinsic, frames, 1.0
+        poses.append(look_at(eye, [-1.5, 0.3 * np.sin(angle), 0.7]))
+    return poses
 
 
-def reconstruct(frames, intrinsic, depth_scale, voxel_length, depth_trunc):
-    odometry = o3d.pipelines.odometry
-    integration = o3d.pipelines.integration
-    volume = integration.ScalableTSDFVolume(voxel_length=voxel_length, sdf_trunc=5 * voxel_length,
-                                            color_type=integration.TSDFVolumeColorType.RGB8)
-    world_to_camera, previous = np.identity(4), None
-    for color, depth in frames:
-        gray = o3d.geometry.RGBDImage.create_from_color_and_depth(color, depth, depth_scale=depth_scale,
-                                                                  depth_trunc=depth_trunc)
-        rgb = o3d.geometry.RGBDImage.create_from_color_and_depth(color, depth, depth_scale=depth_scale,
-                                                                 depth_trunc=depth_trunc, convert_rgb_to_intensity=False)
-        if previous is not None:
-            ok, step, _ = odometry.compute_rgbd_odometry(previous, gray, intrinsic, np.identity(4),
-                                                         odometry.RGBDOdometryJacobianFromHybridTerm(),
-                                                         odometry.OdometryOption())
-            if ok:
-                world_to_camera = step @ world_to_camera
-        previous = gray
-        volume.integrate(rgb, intrinsic, world_to_camera)
-    mesh = volume.extract_triangle_mesh()
-    mesh.compute_vertex_normals()
-    return mesh, world_to_camera
+def reconstruct(config, out_dir):
+    """The four stages of the system; returns the scene mesh and the camera-to-world poses (first camera's frame)."""
+    config = dict(config, path_output=out_dir)
+    o3d.pipelines.reconstruction.run_system(config, resume=False, print_progress=False)
+    mesh = o3d.io.read_triangle_mesh(os.path.join(out_dir, "scene", "integrated.ply"))
+    trajectory = o3d.io.read_pinhole_camera_trajectory(os.path.join(out_dir, "scene", "trajectory.log"))
+    return mesh, [np.linalg.inv(p.extrinsic) for p in trajectory.parameters]
 
 
 def run(out_dir, step, render_png):
-    source = shared_sequence(40) or synthesized_sequence(24)
-    name, intrinsic, frames, depth_scale = source
-    print(f"Reconstruction of a short stretch: {len(frames)} frames of {name}")
-    shared = depth_scale == 1000.0  # (the room synthesized here is larger: a 4 m trunc sees its far wall)
-    voxel, depth_trunc = (4.0 / 512, 3.0) if shared else (0.01, 4.5)
-    mesh, last = step("odometry between neighbouring frames, each frame fused into a ScalableTSDFVolume, mesh extracted",
-                      lambda: reconstruct(frames, intrinsic, depth_scale, voxel, depth_trunc))
-    print(f"    {len(mesh.vertices):,} vertices, {len(mesh.triangles):,} triangles")
-    mesh_path = os.path.join(out_dir, "room.ply")
-    step(f"write_triangle_mesh({mesh_path})", lambda: o3d.io.write_triangle_mesh(mesh_path, mesh))
+    dataset = os.path.join(out_dir, "room_frames")
+    name, config = shared_sequence(40, dataset) or synthesized_sequence(24, dataset)
+    frames = len(os.listdir(os.path.join(dataset, "depth")))
+    print(f"Reconstruction of a short stretch: {frames} frames of {name}")
+    mesh, poses = step("the reconstruction system: make fragments (odometry, loop closures, pose graphs, TSDF), "
+                       "register and refine them, integrate the scene",
+                       lambda: reconstruct(config, os.path.join(out_dir, "room_reconstruction")))
+    print(f"    {len(mesh.vertices):,} vertices, {len(mesh.triangles):,} triangles, {len(poses)} camera poses "
+          f"(scene/integrated.ply, scene/trajectory.log)")
     # Seen from behind and above the first camera (the world frame is the first camera's: y down, z forward).
     centre = mesh.get_center()
     return step("rendered the reconstruction",

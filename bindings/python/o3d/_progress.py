@@ -1,4 +1,5 @@
 """Progress display for long calls: tqdm when installed, else a one-line bar on stderr."""
+import contextlib
 import sys
 
 
@@ -33,3 +34,25 @@ class ProgressBar:
         elif self._last >= 0:
             self._file.write("\n")
             self._file.flush()
+
+
+@contextlib.contextmanager
+def progress_context(desc, print_progress, callback):
+    """The C progress callable for (print_progress, callback), or None when neither is asked for."""
+    if callback is not None and not callable(callback):
+        raise TypeError("callback: expected a callable")
+    bar = ProgressBar(desc) if print_progress else None
+    if bar is None and callback is None:
+        yield None
+        return
+
+    def progress(fraction):
+        if bar is not None:
+            bar.update(fraction)
+        return bool(callback(fraction)) if callback is not None else False
+
+    try:
+        yield progress
+    finally:
+        if bar is not None:
+            bar.close()

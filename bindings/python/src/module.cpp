@@ -15,6 +15,7 @@ void define_selection(py::module_& m);
 void define_odometry(py::module_& m);
 void define_integration(py::module_& m);
 void define_color_map(py::module_& m);
+void define_reconstruction(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -60,4 +61,5 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_odometry(m);
     o::define_integration(m);
     o::define_color_map(m);
+    o::define_reconstruction(m);
 }

@@ -28,5 +28,6 @@
 #include "o3d/odometry.h"
 #include "o3d/integration.h"
 #include "o3d/color_map.h"
+#include "o3d/reconstruction.h"
 
 #endif /* O3D_O3D_H */

@@ -22,6 +22,7 @@
 #include "o3dpp/options.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/posegraph.hpp"
+#include "o3dpp/reconstruction.hpp"
 #include "o3dpp/registration.hpp"
 #include "o3dpp/rgbd.hpp"
 #include "o3dpp/selection.hpp"

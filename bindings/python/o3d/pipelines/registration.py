@@ -8,10 +8,9 @@ raising (its exception propagates); ``num_threads`` (0 = default) never changes 
 also take ``seed``: None draws from the global generator (``o3d.utility.random.seed``), an int gives the
 same result on any thread count.
 """
-import contextlib
 
 from .. import _o3d
-from .._progress import ProgressBar
+from .._progress import progress_context as _progress
 from .._o3d import (  # noqa: F401
     CauchyLoss,
     CorrespondenceChecker,
@@ -52,28 +51,6 @@ from ._pose_graph import PoseGraphEdge, PoseGraphEdgeVector, PoseGraphNode, Pose
 # Keyword defaults from the C *_init functions (o3d_icp_options_init, o3d_ransac_options_init, ...).
 _ICP, _RANSAC, _FGR = _o3d._icp_defaults, _o3d._ransac_defaults, _o3d._fgr_defaults
 _GLOBAL_OPTIMIZATION = _o3d._global_optimization_defaults
-
-
-@contextlib.contextmanager
-def _progress(desc, print_progress, callback):
-    """The C progress callable for (print_progress, callback), or None when neither is asked for."""
-    if callback is not None and not callable(callback):
-        raise TypeError("callback: expected a callable")
-    bar = ProgressBar(desc) if print_progress else None
-    if bar is None and callback is None:
-        yield None
-        return
-
-    def progress(fraction):
-        if bar is not None:
-            bar.update(fraction)
-        return bool(callback(fraction)) if callback is not None else False
-
-    try:
-        yield progress
-    finally:
-        if bar is not None:
-            bar.close()
 
 
 def _require(estimation_method, cls, function):

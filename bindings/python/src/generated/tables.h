@@ -70,6 +70,19 @@ inline py::enum_<TSDFVolumeColorType> def_enum<TSDFVolumeColorType>(py::handle s
     return e;
 }
 
+/// A stage of the reconstruction system (O3D_RECONSTRUCTION_STAGE_*).
+enum class ReconstructionStage : int32_t { MakeFragments = O3D_RECONSTRUCTION_STAGE_MAKE_FRAGMENTS, RegisterFragments = O3D_RECONSTRUCTION_STAGE_REGISTER_FRAGMENTS, RefineRegistration = O3D_RECONSTRUCTION_STAGE_REFINE_REGISTRATION, IntegrateScene = O3D_RECONSTRUCTION_STAGE_INTEGRATE_SCENE, ColorMap = O3D_RECONSTRUCTION_STAGE_COLOR_MAP };
+template <>
+inline py::enum_<ReconstructionStage> def_enum<ReconstructionStage>(py::handle scope) {
+    py::enum_<ReconstructionStage> e(scope, "ReconstructionStage", "A stage of the reconstruction system.");
+    e.value("MakeFragments", ReconstructionStage::MakeFragments, "Odometry, fragment pose graphs and clouds.");
+    e.value("RegisterFragments", ReconstructionStage::RegisterFragments, "Global registration of the fragments.");
+    e.value("RefineRegistration", ReconstructionStage::RefineRegistration, "Multi-scale ICP between fragments.");
+    e.value("IntegrateScene", ReconstructionStage::IntegrateScene, "The scene mesh and trajectory.");
+    e.value("ColorMap", ReconstructionStage::ColorMap, "Colour-map optimization of the scene mesh.");
+    return e;
+}
+
 /// How vertex clustering places a cluster's vertex (O3D_SIMPLIFICATION_*).
 enum class SimplificationContraction : int32_t { Average = O3D_SIMPLIFICATION_AVERAGE, Quadric = O3D_SIMPLIFICATION_QUADRIC };
 template <>
@@ -273,6 +286,16 @@ struct Fields<o3d_global_optimization_options_t> {
         f("preference_loop_closure", &o3d_global_optimization_options_t::preference_loop_closure, As<double>{}, "Weight of loop closures against odometry; default 1.0.");
         f("reference_node", &o3d_global_optimization_options_t::reference_node, As<int32_t>{}, "Node kept fixed; -1 (default): the first node.");
         f("num_threads", &o3d_global_optimization_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
+    }
+};
+
+/// o3d_reconstruction_options_t (reconstruction.h): How a stage runs.
+template <>
+struct Fields<o3d_reconstruction_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("resume", &o3d_reconstruction_options_t::resume, As<bool>{}, "Non-zero: skip work whose output files exist; default True.");
+        f("num_threads", &o3d_reconstruction_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
     }
 };
 

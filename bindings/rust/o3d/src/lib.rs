@@ -56,6 +56,7 @@ mod panic;
 mod pointcloud;
 mod posegraph;
 mod progress;
+pub mod reconstruction;
 pub mod registration;
 mod registration_global;
 mod rgbd;

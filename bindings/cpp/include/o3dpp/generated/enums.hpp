@@ -89,6 +89,15 @@ enum class GlobalOptimizationMethod : int32_t {
     LevenbergMarquardt = O3D_GLOBAL_OPTIMIZATION_LEVENBERG_MARQUARDT,  ///< GlobalOptimizationLevenbergMarquardt
 };
 
+/// @brief A stage of the reconstruction system (O3D_RECONSTRUCTION_STAGE_*).
+enum class ReconstructionStage : int32_t {
+    MakeFragments = O3D_RECONSTRUCTION_STAGE_MAKE_FRAGMENTS,  ///< odometry, fragment pose graphs and clouds
+    RegisterFragments = O3D_RECONSTRUCTION_STAGE_REGISTER_FRAGMENTS,  ///< global registration of the fragments
+    RefineRegistration = O3D_RECONSTRUCTION_STAGE_REFINE_REGISTRATION,  ///< multi-scale ICP between fragments
+    IntegrateScene = O3D_RECONSTRUCTION_STAGE_INTEGRATE_SCENE,  ///< the scene mesh and trajectory
+    ColorMap = O3D_RECONSTRUCTION_STAGE_COLOR_MAP,  ///< colour-map optimization of the scene mesh
+};
+
 /// @brief Transformation estimation methods (O3D_ESTIMATION_*).
 enum class Estimation : int32_t {
     PointToPoint = O3D_ESTIMATION_POINT_TO_POINT,  ///< TransformationEstimationPointToPoint

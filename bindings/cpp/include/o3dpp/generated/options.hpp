@@ -279,6 +279,24 @@ struct GlobalOptimizationOptionsFields {
 struct GlobalOptimizationOptions : COptions<GlobalOptimizationOptions, detail::GlobalOptimizationOptionsFields, o3d_global_optimization_options_t, &o3d_global_optimization_options_init> {};
 
 namespace detail {
+/// @brief The fields of o3d_reconstruction_options_t (reconstruction.h).
+struct ReconstructionOptionsFields {
+    bool resume;  ///< non-zero: skip work whose output files exist; default true
+    int num_threads;  ///< 0 = library default; the result does not depend on it
+    ProgressCallback progress;  ///< called with the fraction of the stage done; may be empty; return false to cancel (an exception it throws cancels the call and is rethrown)
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.resume, c.resume);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief How a stage runs. Defaults from o3d_reconstruction_options_init.
+struct ReconstructionOptions : COptions<ReconstructionOptions, detail::ReconstructionOptionsFields, o3d_reconstruction_options_t, &o3d_reconstruction_options_init> {};
+
+namespace detail {
 /// @brief The fields of o3d_icp_options_t (registration.h).
 struct IcpOptionsFields {
     Estimation estimation;  ///< Estimation; default Estimation::PointToPoint

@@ -302,6 +302,7 @@ static partial class Test
         OdometryTests(); // OdometryTest.cs
         IntegrationTests(); // IntegrationTest.cs
         ColorMapTests(); // ColorMapTest.cs
+        ReconstructionTests(); // ReconstructionTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

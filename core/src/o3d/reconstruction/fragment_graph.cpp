@@ -19,6 +19,15 @@ void optimize_pose_graph(registration::PoseGraph& graph, double max_corresponden
     registration::global_optimization(graph, options);
 }
 
+void write_optimized_scene_graph(registration::PoseGraph graph, const Config& config, const std::string& graph_path,
+                                 const std::string& optimized_path) {
+    with_context("scene pose graph", [&] {
+        write_whole_file(graph_path, io::format_pose_graph_json(graph));
+        optimize_pose_graph(graph, config.voxel_size * 1.4, config.preference_loop_closure_registration);
+        write_whole_file(optimized_path, io::format_pose_graph_json(graph));
+    });
+}
+
 registration::PoseGraph read_stage_pose_graph(const std::string& path, const char* writer) {
     if (!file_exists(path)) throw IoError(path + ": missing; run the \"" + std::string(writer) + "\" stage first");
     return io::read_pose_graph(path);

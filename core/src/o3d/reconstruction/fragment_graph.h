@@ -18,6 +18,12 @@ namespace o3d::reconstruction {
 void optimize_pose_graph(registration::PoseGraph& graph, double max_correspondence_distance,
                          double preference_loop_closure);
 
+/// @brief The scene graph's two files, as Open3D's register and refine stages write them: the graph as built at
+/// `graph_path`, then optimized (line-process distance 1.4 voxel_size, preference_loop_closure_registration) at
+/// `optimized_path`, last, so that the stage counts as done only when both exist.
+void write_optimized_scene_graph(registration::PoseGraph graph, const Config& config, const std::string& graph_path,
+                                 const std::string& optimized_path);
+
 /// @brief read_pose_graph, with a missing file reported as the output of `writer` (the stage to run first).
 registration::PoseGraph read_stage_pose_graph(const std::string& path, const char* writer);
 

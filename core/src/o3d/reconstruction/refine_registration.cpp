@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Stage 3 (Open3D's refine_registration.py): multi-scale ICP (voxel, voxel/2, voxel/4; 50, 30, 14 iterations)
 // on every edge the global optimization kept, from its transformation; the scene graph rebuilt and optimized.
+#include <utility>
 #include <vector>
 
-#include "o3d/io/pose_graph_io.h"
 #include "o3d/reconstruction/dataset.h"
 #include "o3d/reconstruction/fragment_clouds.h"
 #include "o3d/reconstruction/fragment_graph.h"
@@ -44,13 +44,9 @@ void refine_registration(const Config& config, const StageOptions& options) {
     graph.nodes.push_back({odometry});
     for (size_t i = 0; i < results.size(); ++i)
         add_scene_pair(global.edges[i].source_node_id, global.edges[i].target_node_id, results[i], odometry, graph);
-    with_context("scene pose graph", [&] {
-        if (graph.nodes.size() != global.nodes.size())  // a neighbour edge is certain, so never pruned
-            throw InvalidArgument("the global graph lacks an edge between neighbouring fragments");
-        write_whole_file(graph_path, io::format_pose_graph_json(graph));
-        optimize_pose_graph(graph, v * 1.4, config.preference_loop_closure_registration);
-        write_whole_file(optimized_path, io::format_pose_graph_json(graph));
-    });
+    if (graph.nodes.size() != global.nodes.size())  // a neighbour edge is certain, so never pruned
+        throw InvalidArgument("the global graph lacks an edge between neighbouring fragments");
+    write_optimized_scene_graph(std::move(graph), config, graph_path, optimized_path);
     progress.complete();
     progress.report();
 }

@@ -2,10 +2,9 @@
 // Stage 2 (Open3D's register_fragments.py): every pair of fragment clouds, neighbours by ICP from the fragment's
 // own odometry, others by FPFH global registration; one scene pose graph, optimized with the line process.
 #include <Eigen/LU>  // Matrix4d::inverse
+#include <utility>
 #include <vector>
 
-#include "o3d/io/point_cloud_io.h"
-#include "o3d/io/pose_graph_io.h"
 #include "o3d/reconstruction/dataset.h"
 #include "o3d/reconstruction/fragment_clouds.h"
 #include "o3d/reconstruction/fragment_graph.h"
@@ -57,11 +56,7 @@ void register_fragments(const Config& config, const StageOptions& options) {
     graph.nodes.push_back({odometry});
     for (size_t i = 0; i < pairs.size(); ++i)
         if (results[i].success) add_scene_pair(pairs[i].first, pairs[i].second, results[i], odometry, graph);
-    with_context("scene pose graph", [&] {
-        write_whole_file(graph_path, io::format_pose_graph_json(graph));
-        optimize_pose_graph(graph, config.voxel_size * 1.4, config.preference_loop_closure_registration);
-        write_whole_file(optimized_path, io::format_pose_graph_json(graph));
-    });
+    write_optimized_scene_graph(std::move(graph), config, graph_path, optimized_path);
     progress.complete();
     progress.report();
 }

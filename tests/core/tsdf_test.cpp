@@ -23,6 +23,7 @@
 #include "o3d/kdtree/kd_tree.h"
 #include "o3d/odometry/odometry.h"
 #include "o3d/utility/error.h"
+#include "o3d/utility/parallel.h"
 #include "test_data.h"
 #include "tsdf_test_scenes.h"
 
@@ -88,7 +89,14 @@ TEST(MarchingCubes, RandomFieldOverManyBlocksIsClosedAndConsistentlyWound) {
                     block.weight[i] = 1.0f;
                 }
             }
+    o3d::utility::set_default_num_threads(4);
     const geometry::TriangleMesh mesh = integration::detail::marching_cubes(map);
+    // The blocks are meshed in parallel and merged in key order: one thread gives the very same mesh.
+    o3d::utility::set_default_num_threads(1);
+    const geometry::TriangleMesh serial = integration::detail::marching_cubes(map);
+    o3d::utility::set_default_num_threads(0);
+    EXPECT_TRUE(serial.vertices == mesh.vertices);
+    EXPECT_TRUE(serial.triangles == mesh.triangles);
     ASSERT_GT(mesh.triangles.size(), 500u);
     EXPECT_TRUE(geometry::is_edge_manifold(mesh, false));
     EXPECT_TRUE(geometry::is_vertex_manifold(mesh));

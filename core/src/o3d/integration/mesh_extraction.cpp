@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
-// TSDFVolume::extract_triangle_mesh: marching cubes block by block, in key order.
+// TSDFVolume::extract_triangle_mesh: marching cubes block by block, the blocks in parallel, merged in key order.
 //
 // Each crossed edge gets one vertex, shared by the up-to-four cubes around it. An edge whose cubes all lie in
 // one block is found again through two x slices of that block (the cubes at x and x + 1 are the only ones to
-// ask); an edge on a block face is shared with a neighbouring block and goes through a hash map. Most edges are
-// of the first kind, so the map stays small.
+// ask); an edge on a block face may be shared with a neighbouring block: the block lists it by its global key,
+// and the merge, walking the blocks in key order, gives it the vertex of the first block that made it. So the
+// mesh is the one a serial walk in key order builds, whatever the thread count.
 #include <array>
 #include <cmath>
 #include <unordered_map>
+
+#include "o3d/io/file_bytes.h"  // prefault
+#include "o3d/utility/parallel.h"
 
 #include "o3d/integration/marching_cubes_cases.h"
 #include "o3d/integration/surface_extraction.h"
@@ -34,15 +38,30 @@ struct EdgeKeyHash {
     }
 };
 
+/// One block's share of the mesh: its vertices, its triangles over them, and which of them lie on block-face
+/// edges (by global edge key), for the merge.
+struct BlockMesh {
+    geometry::TriangleMesh mesh;
+    std::vector<std::pair<EdgeKey, int>> shared;
+};
+
 class MeshBuilder {
 public:
-    MeshBuilder(const detail::BlockMap& map, geometry::TriangleMesh& mesh)
-        : map_(map), mesh_(mesh), side_(map.side()), with_color_(map.with_color()) {
+    explicit MeshBuilder(const detail::BlockMap& map)
+        : map_(map), side_(map.side()), with_color_(map.with_color()) {
         for (std::vector<int>& slice : slices_) slice.resize(size_t(side_) * size_t(side_) * 3);
         for (int c = 0; c < 8; ++c)
             offset_[size_t(c)] = (size_t(c & 1) * size_t(side_) + size_t((c >> 1) & 1)) * size_t(side_) + size_t((c >> 2) & 1);
     }
 
+    void build(const detail::VoxelBlock& block, BlockMesh& out) {
+        mesh_ = &out.mesh;
+        shared_.clear();
+        add_block(block);
+        out.shared.assign(shared_.begin(), shared_.end());
+    }
+
+private:
     void add_block(const detail::VoxelBlock& block) {
         const detail::VoxelNeighbourhood around(map_, block);
         const std::array<detail::CubeCase, 256>& cases = detail::cube_cases();
@@ -87,14 +106,13 @@ public:
                             if (vertex[size_t(e)] < 0) vertex[size_t(e)] = vertex_on(x, y, z, e, corner);
                             triangle(k) = vertex[size_t(e)];
                         }
-                        mesh_.triangles.push_back(triangle);
+                        mesh_->triangles.push_back(triangle);
                     }
                 }
             }
         }
     }
 
-private:
     int vertex_on(int x, int y, int z, int edge, const std::array<VoxelSample, 8>& corner) {
         const int c0 = detail::edge_corner(edge), axis = detail::edge_axis(edge), c1 = c0 | (1 << axis);
         const Eigen::Vector3i v(x + (c0 & 1), y + ((c0 >> 1) & 1), z + ((c0 >> 2) & 1));
@@ -112,31 +130,78 @@ private:
         const double t = double(f0) / double(f0 + f1);
         Eigen::Vector3d position = (base_ + v).cast<double>() + Eigen::Vector3d::Constant(0.5);
         position(axis) += t;
-        *slot = int(mesh_.vertices.size());
-        mesh_.vertices.push_back(map_.origin() + map_.voxel_length() * position);
+        *slot = int(mesh_->vertices.size());
+        mesh_->vertices.push_back(map_.origin() + map_.voxel_length() * position);
         if (with_color_) {
             const Eigen::Vector3f color = (f1 * *corner[size_t(c0)].color + f0 * *corner[size_t(c1)].color) / (f0 + f1);
-            mesh_.vertex_colors.push_back(color.cast<double>());
+            mesh_->vertex_colors.push_back(color.cast<double>());
         }
         return *slot;
     }
 
     const detail::BlockMap& map_;
-    geometry::TriangleMesh& mesh_;
+    geometry::TriangleMesh* mesh_ = nullptr;
     int side_;
     bool with_color_;
     Eigen::Vector3i base_;
     std::array<std::vector<int>, 2> slices_;
     std::array<size_t, 8> offset_{};  // index step from a cube's first voxel to each corner, inside a block
-    std::unordered_map<EdgeKey, int, EdgeKeyHash> shared_;
+    std::unordered_map<EdgeKey, int, EdgeKeyHash> shared_;  // this block's face edges -> its vertex
 };
+
+/// Append `part` to `mesh`: its face-edge vertices another block made already become that block's vertex.
+void merge(const BlockMesh& part, bool with_color, std::unordered_map<EdgeKey, int, EdgeKeyHash>& face_vertices,
+           std::vector<int>& local_to_global, geometry::TriangleMesh& mesh) {
+    local_to_global.assign(part.mesh.vertices.size(), -1);
+    for (const auto& [key, local] : part.shared) {
+        const auto found = face_vertices.find(key);
+        if (found != face_vertices.end()) local_to_global[size_t(local)] = found->second;
+    }
+    for (size_t i = 0; i < local_to_global.size(); ++i) {
+        if (local_to_global[i] >= 0) continue;
+        local_to_global[i] = int(mesh.vertices.size());
+        mesh.vertices.push_back(part.mesh.vertices[i]);
+        if (with_color) mesh.vertex_colors.push_back(part.mesh.vertex_colors[i]);
+    }
+    for (const auto& [key, local] : part.shared) face_vertices.try_emplace(key, local_to_global[size_t(local)]);
+    for (const Eigen::Vector3i& t : part.mesh.triangles)
+        mesh.triangles.emplace_back(local_to_global[size_t(t(0))], local_to_global[size_t(t(1))],
+                                    local_to_global[size_t(t(2))]);
+}
 
 }  // namespace
 
 geometry::TriangleMesh detail::marching_cubes(const BlockMap& map) {
+    const std::vector<const VoxelBlock*> blocks = map.sorted_blocks();
+    std::vector<BlockMesh> parts(blocks.size());
+    const int threads = utility::resolve_num_threads(0);
+#pragma omp parallel num_threads(threads) if (threads > 1 && blocks.size() > 1)
+    {
+        MeshBuilder builder(map);
+#pragma omp for schedule(dynamic, 16)
+        for (int64_t i = 0; i < int64_t(blocks.size()); ++i) builder.build(*blocks[size_t(i)], parts[size_t(i)]);
+    }
     geometry::TriangleMesh mesh;
-    MeshBuilder builder(map, mesh);
-    for (const VoxelBlock* block : map.sorted_blocks()) builder.add_block(*block);
+    size_t vertices = 0, triangles = 0;
+    for (const BlockMesh& part : parts) vertices += part.mesh.vertices.size(), triangles += part.mesh.triangles.size();
+    // Map the output's pages in one call each rather than a fault per 4 KiB page as the merge first writes them.
+    mesh.vertices.reserve(vertices);
+    io::detail::prefault(mesh.vertices.data(), vertices * sizeof(Eigen::Vector3d));
+    if (map.with_color()) {
+        mesh.vertex_colors.reserve(vertices);
+        io::detail::prefault(mesh.vertex_colors.data(), vertices * sizeof(Eigen::Vector3d));
+    }
+    mesh.triangles.reserve(triangles);
+    io::detail::prefault(mesh.triangles.data(), triangles * sizeof(Eigen::Vector3i));
+    size_t shared = 0;
+    for (const BlockMesh& part : parts) shared += part.shared.size();
+    std::unordered_map<EdgeKey, int, EdgeKeyHash> face_vertices;
+    face_vertices.reserve(shared);
+    std::vector<int> local_to_global;
+    for (BlockMesh& part : parts) {
+        merge(part, map.with_color(), face_vertices, local_to_global, mesh);
+        part = BlockMesh();  // free as we go: the parts together are as large as the mesh
+    }
     return mesh;
 }
 

@@ -173,6 +173,7 @@ fn every_header_struct_has_the_same_fields_in_order() {
             "o3d_pose_graph_edge",
             "o3d_ransac_options",
             "o3d_read_options",
+            "o3d_reconstruction_options",
             "o3d_render_material",
             "o3d_render_option",
             "o3d_rgbd_options",

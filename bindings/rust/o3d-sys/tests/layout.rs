@@ -309,6 +309,12 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
             44,
         ),
         ("offsetof(o3d_color_map_rigid_options_t, progress)", offset_of!(o3d_color_map_rigid_options_t, progress), 48),
+        ("sizeof(o3d_reconstruction_options_t)", size_of::<o3d_reconstruction_options_t>(), 32),
+        ("_Alignof(o3d_reconstruction_options_t)", align_of::<o3d_reconstruction_options_t>(), 8),
+        ("offsetof(o3d_reconstruction_options_t, resume)", offset_of!(o3d_reconstruction_options_t, resume), 4),
+        ("offsetof(o3d_reconstruction_options_t, num_threads)", offset_of!(o3d_reconstruction_options_t, num_threads), 8),
+        ("offsetof(o3d_reconstruction_options_t, progress)", offset_of!(o3d_reconstruction_options_t, progress), 16),
+        ("offsetof(o3d_reconstruction_options_t, user_data)", offset_of!(o3d_reconstruction_options_t, user_data), 24),
         ("sizeof(o3d_color_map_non_rigid_options_t)", size_of::<o3d_color_map_non_rigid_options_t>(), 80),
         ("_Alignof(o3d_color_map_non_rigid_options_t)", align_of::<o3d_color_map_non_rigid_options_t>(), 8),
         (
@@ -538,6 +544,11 @@ fn rgbd_and_depth_options_init_accept_rust_sizes_and_fill_defaults() {
         let st = o3d_color_map_rigid_options_init(&mut c, size_of::<o3d_color_map_rigid_options_t>() as u32);
         assert_eq!(st, O3D_OK, "{}", last_message());
         assert_eq!((c.struct_size as usize, c.maximum_iteration), (size_of::<o3d_color_map_rigid_options_t>(), 300));
+
+        let mut r: o3d_reconstruction_options_t = std::mem::zeroed();
+        let st = o3d_reconstruction_options_init(&mut r, size_of::<o3d_reconstruction_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!((r.struct_size as usize, r.resume, r.num_threads), (size_of::<o3d_reconstruction_options_t>(), 1, 0));
 
         let mut n: o3d_color_map_non_rigid_options_t = std::mem::zeroed();
         let st = o3d_color_map_non_rigid_options_init(&mut n, size_of::<o3d_color_map_non_rigid_options_t>() as u32);

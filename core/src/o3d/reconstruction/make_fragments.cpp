@@ -20,7 +20,7 @@ namespace {
 constexpr const char* kStage = "make fragments";
 
 struct FramePair {
-    int fragment;
+    size_t slot;         ///< the fragment's index in the stage's work list
     int source, target;  ///< absolute frame numbers
 };
 
@@ -29,9 +29,9 @@ struct FragmentWork {
     registration::PoseGraph graph;
 };
 
-odometry::OdometryResult rgbd_odometry(const Config& config, const Dataset& dataset, const FramePair& pair,
-                                       const Eigen::Matrix4d& init) {
-    return with_context("fragment " + std::to_string(pair.fragment) + ": odometry " + std::to_string(pair.source) +
+odometry::OdometryResult rgbd_odometry(const Config& config, const Dataset& dataset, int fragment,
+                                       const FramePair& pair, const Eigen::Matrix4d& init) {
+    return with_context("fragment " + std::to_string(fragment) + ": odometry " + std::to_string(pair.source) +
                             " -> " + std::to_string(pair.target),
                         [&] {
                             const geometry::RGBDImage source = read_frame(config, dataset, pair.source, true);
@@ -69,14 +69,14 @@ void make_fragments(const Config& config, const StageOptions& options) {
         if (!options.resume || !fragment_done(config, id)) work.push_back({id, {}});
 
     std::vector<FramePair> neighbours, loops;
-    for (const FragmentWork& f : work) {
-        const int first = dataset.first_frame(f.id), end = dataset.end_frame(f.id);
-        for (int s = first; s + 1 < end; ++s) neighbours.push_back({f.id, s, s + 1});
+    for (size_t slot = 0; slot < work.size(); ++slot) {
+        const int first = dataset.first_frame(work[slot].id), end = dataset.end_frame(work[slot].id);
+        for (int s = first; s + 1 < end; ++s) neighbours.push_back({slot, s, s + 1});
         const int k = config.n_keyframes_per_n_frame;
         if (config.loop_closure_odometry)
             for (int s = first; s < end; ++s)
                 for (int t = s + 2; t < end; ++t)
-                    if (s % k == 0 && t % k == 0) loops.push_back({f.id, s, t});
+                    if (s % k == 0 && t % k == 0) loops.push_back({slot, s, t});
     }
     size_t frames = 0;
     for (const FragmentWork& f : work) frames += static_cast<size_t>(dataset.end_frame(f.id) - dataset.first_frame(f.id));
@@ -86,7 +86,8 @@ void make_fragments(const Config& config, const StageOptions& options) {
     // Neighbour odometry from the identity, as Open3D; its edges are kept even when odometry reports failure.
     std::vector<odometry::OdometryResult> steps(neighbours.size());
     parallel_for(neighbours.size(), threads, progress, kStage, [&](size_t i) {
-        steps[i] = rgbd_odometry(config, dataset, neighbours[i], Eigen::Matrix4d::Identity());
+        const FramePair& p = neighbours[i];
+        steps[i] = rgbd_odometry(config, dataset, work[p.slot].id, p, Eigen::Matrix4d::Identity());
     });
     size_t next_step = 0;
     for (FragmentWork& f : work) {
@@ -101,23 +102,19 @@ void make_fragments(const Config& config, const StageOptions& options) {
     }
 
     // Loop closures between keyframes, from the relative pose the chain predicts.
-    const auto work_of = [&](int id) -> FragmentWork& {
-        for (FragmentWork& f : work)
-            if (f.id == id) return f;
-        return work.front();  // unreachable: every pair comes from a fragment in `work`
-    };
     std::vector<odometry::OdometryResult> closures(loops.size());
     parallel_for(loops.size(), threads, progress, kStage, [&](size_t i) {
         const FramePair& p = loops[i];
-        const registration::PoseGraph& g = work_of(p.fragment).graph;
-        const int first = dataset.first_frame(p.fragment);
+        const FragmentWork& f = work[p.slot];
+        const registration::PoseGraph& g = f.graph;
+        const int first = dataset.first_frame(f.id);
         const Eigen::Matrix4d predicted = g.nodes[static_cast<size_t>(p.target - first)].pose.inverse() *
                                           g.nodes[static_cast<size_t>(p.source - first)].pose;
-        closures[i] = rgbd_odometry(config, dataset, p, predicted);
+        closures[i] = rgbd_odometry(config, dataset, f.id, p, predicted);
     });
     for (size_t i = 0; i < loops.size(); ++i)
         if (closures[i].success) {
-            FragmentWork& f = work_of(loops[i].fragment);
+            FragmentWork& f = work[loops[i].slot];
             f.graph.edges.push_back(edge_of(loops[i], dataset.first_frame(f.id), closures[i], true));
         }
 

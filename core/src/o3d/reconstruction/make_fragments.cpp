@@ -63,7 +63,7 @@ bool fragment_done(const Config& config, int id) {
 
 void make_fragments(const Config& config, const StageOptions& options) {
     const Dataset dataset = open_dataset(config);
-    const int threads = config.python_multi_threading ? options.num_threads : 1;
+    const int threads = item_threads(config, options);
     std::vector<FragmentWork> work;
     for (int id = 0; id < dataset.fragment_count(); ++id)
         if (!options.resume || !fragment_done(config, id)) work.push_back({id, {}});

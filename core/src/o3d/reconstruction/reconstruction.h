@@ -34,6 +34,12 @@ struct StageOptions {
     std::function<bool(double)> progress;
 };
 
+/// @brief Threads for a stage's independent items (pairs, fragments): Open3D's python_multi_threading false runs
+/// them one at a time.
+inline int item_threads(const Config& config, const StageOptions& options) {
+    return config.python_multi_threading ? options.num_threads : 1;
+}
+
 /// @brief Run one stage. @throws o3d::IoError / ParseError / InvalidArgument with the stage, and where it applies
 /// the frame, fragment or pair, in the message (a missing input names the stage that writes it);
 /// o3d::Cancelled when the progress callback asks to stop (finished outputs are kept).

@@ -20,7 +20,7 @@ void refine_registration(const Config& config, const StageOptions& options) {
     const std::string graph_path = config.output(config.template_refined_posegraph);
     const std::string optimized_path = config.output(config.template_refined_posegraph_optimized);
     if (options.resume && file_exists(optimized_path)) return;
-    const int threads = config.python_multi_threading ? options.num_threads : 1;
+    const int threads = item_threads(config, options);
     const registration::PoseGraph global = read_stage_pose_graph(
         config.output(config.template_global_posegraph_optimized), "register fragments");
     const int n = static_cast<int>(global.nodes.size());

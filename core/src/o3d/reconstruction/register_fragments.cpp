@@ -21,7 +21,7 @@ void register_fragments(const Config& config, const StageOptions& options) {
     const std::string graph_path = config.output(config.template_global_posegraph);
     const std::string optimized_path = config.output(config.template_global_posegraph_optimized);
     if (options.resume && file_exists(optimized_path)) return;
-    const int threads = config.python_multi_threading ? options.num_threads : 1;
+    const int threads = item_threads(config, options);
     const int n = open_dataset(config).fragment_count();
     std::vector<std::pair<int, int>> pairs;
     for (int s = 0; s < n; ++s)

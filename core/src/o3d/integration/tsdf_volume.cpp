@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "o3d/integration/tsdf_volume.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -80,11 +81,19 @@ void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::
     frame.fy = float(intrinsic.fy);
     frame.cx = float(intrinsic.cx);
     frame.cy = float(intrinsic.cy);
-    frame.depth = reinterpret_cast<const float*>(image.depth.data.data());
+    const float* depth = reinterpret_cast<const float*>(image.depth.data.data());
+    const uint8_t* rgb = color_type_ == ColorType::RGB8 ? image.color.data.data() : nullptr;
+    std::vector<detail::FramePixel> pixels;
+    const float* intensity = color_type_ == ColorType::Gray32
+                                 ? reinterpret_cast<const float*>(image.color.data.data())
+                                 : nullptr;
+    detail::interleave_pixels(depth, rgb, intensity, size_t(intrinsic.width) * size_t(intrinsic.height), pixels);
+    frame.pixels = pixels.data();
+    frame.color = rgb ? detail::FrameColor::RGB8 : intensity ? detail::FrameColor::Gray32 : detail::FrameColor::None;
+    depth_tiles_.build(depth, intrinsic.width, intrinsic.height);
+    frame.tiles = &depth_tiles_;
     frame.ray_x2 = ray_x2_.data();
     frame.ray_y2 = ray_y2_.data();
-    if (color_type_ == ColorType::RGB8) frame.rgb = image.color.data.data();
-    if (color_type_ == ColorType::Gray32) frame.intensity = reinterpret_cast<const float*>(image.color.data.data());
     frame.rotation = extrinsic.topLeftCorner<3, 3>().cast<float>();
     frame.translation = extrinsic.topRightCorner<3, 1>().cast<float>();
     frame.sdf_trunc = float(sdf_trunc_);
@@ -94,11 +103,15 @@ void TSDFVolume::integrate_into(const geometry::RGBDImage& image, const camera::
     for (const Eigen::Vector3i& key : keys) targets.push_back(&blocks_.find_or_create(key));
     const int threads = utility::resolve_num_threads();
     const int side = blocks_.side();
-    if (targets.size() == 1) {  // the uniform volume: share its one block out by x slabs
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
-        for (int x = 0; x < side; ++x) detail::integrate_block(*targets[0], blocks_, frame, x, x + 1);
+    if (targets.size() == 1) {  // the uniform volume: share its one block out by x slabs a culling box thick
+        const int slabs = (side + detail::kCullBox - 1) / detail::kCullBox;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (int slab = 0; slab < slabs; ++slab)
+            detail::integrate_block(*targets[0], blocks_, frame, slab * detail::kCullBox,
+                                    std::min(side, (slab + 1) * detail::kCullBox));
         return;
     }
+    detail::order_by_footprint(targets, blocks_, frame);
     // Blocks are independent; dynamic scheduling because blocks outside the view cost little.
 #pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
     for (long i = 0; i < long(targets.size()); ++i)

@@ -10,6 +10,8 @@
 #include "o3d/geometry/rgbd_image.h"
 #include "o3d/geometry/triangle_mesh.h"
 #include "o3d/geometry/voxel_grid.h"
+#include "o3d/integration/depth_tiles.h"
+#include "o3d/integration/frame_integration.h"
 #include "o3d/integration/voxel_block.h"
 
 namespace o3d::integration {
@@ -67,6 +69,10 @@ protected:
     // sqrt(1 + x^2 + y^2)), kept for the intrinsic they were made for.
     camera::PinholeCameraIntrinsic ray_intrinsic_;
     std::vector<float> ray_x2_, ray_y2_;
+    // The frame being integrated, interleaved and summarised; kept so that each frame reuses their memory (a fresh
+    // 5 MB buffer a frame costs more in page faults than filling it).
+    std::vector<detail::FramePixel> frame_pixels_;
+    detail::DepthTiles depth_tiles_;
 };
 
 }  // namespace o3d::integration

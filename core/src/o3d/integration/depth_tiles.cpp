@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cfloat>
 
+#include "o3d/utility/parallel.h"
+
 namespace o3d::integration::detail {
 namespace {
 
@@ -27,17 +29,21 @@ void DepthTiles::build(const float* depth, int width, int height) {
     finest.width = (width + (1 << kTileShift) - 1) >> kTileShift;
     finest.height = (height + (1 << kTileShift) - 1) >> kTileShift;
     finest.tiles.assign(size_t(finest.width) * size_t(finest.height), Span{FLT_MAX, 0.0f});
-    for (int v = 0; v < height; ++v) {
-        Span* row = finest.tiles.data() + size_t(v >> kTileShift) * size_t(finest.width);
-        const float* pixels = depth + size_t(v) * size_t(width);
-        for (int u = 0; u < width; ++u) {
-            const float d = pixels[u];
-            Span& tile = row[u >> kTileShift];
-            if (d > 0.0f && d <= FLT_MAX) {
-                tile.nearest = std::min(tile.nearest, d);
-                tile.farthest = std::max(tile.farthest, d);
-            } else {
-                tile.nearest = 0.0f;
+    // Tile rows are independent: threads take them whole.
+#pragma omp parallel for schedule(static) num_threads(utility::resolve_num_threads())
+    for (int tile_row = 0; tile_row < finest.height; ++tile_row) {
+        Span* row = finest.tiles.data() + size_t(tile_row) * size_t(finest.width);
+        for (int v = tile_row << kTileShift; v < std::min(height, (tile_row + 1) << kTileShift); ++v) {
+            const float* pixels = depth + size_t(v) * size_t(width);
+            for (int u = 0; u < width; ++u) {
+                const float d = pixels[u];
+                Span& tile = row[u >> kTileShift];
+                if (d > 0.0f && d <= FLT_MAX) {
+                    tile.nearest = std::min(tile.nearest, d);
+                    tile.farthest = std::max(tile.farthest, d);
+                } else {
+                    tile.nearest = 0.0f;
+                }
             }
         }
     }

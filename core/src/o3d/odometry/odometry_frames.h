@@ -52,10 +52,14 @@ struct Warp {
     [[gnu::always_inline]] bool apply(int u_s, int v_s, float d_s, int w, int h, int& u_t, int& v_t, double& z) const {
         const Eigen::Vector3d uv = double(d_s) * (krk_inv * Eigen::Vector3d(u_s, v_s, 1.0)) + kt;
         z = uv(2);
-        // Open3D's rounding: add a half and truncate toward zero.
-        u_t = int(uv(0) / z + 0.5);
-        v_t = int(uv(1) / z + 0.5);
-        return u_t >= 0 && u_t < w && v_t >= 0 && v_t < h;
+        // Open3D's rounding: add a half and truncate toward zero, so (-1, 0) still lands on pixel 0. The range is
+        // tested in double first: a point near the camera plane gives a quotient no int holds (or NaN), and
+        // casting that is undefined.
+        const double u_f = uv(0) / z + 0.5, v_f = uv(1) / z + 0.5;
+        if (!(u_f > -1.0 && u_f < double(w) && v_f > -1.0 && v_f < double(h))) return false;
+        u_t = int(u_f);
+        v_t = int(v_f);
+        return true;
     }
     /// @brief Open3D's depth test: the target has a depth within depth_diff_max of the moved point's.
     static bool depths_agree(double z, float d_t, double depth_diff_max) {

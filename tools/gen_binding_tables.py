@@ -12,6 +12,8 @@ listed in a METHODS table or their doc comments. What it writes (first line `@ge
   bindings/cpp/include/o3dpp/generated/<header>.hpp detail::<Class>Calls, a base giving a class its pass-through
                                                     methods (tools/binding_methods.py; CPP_METHODS, CPP_CLASSES)
   bindings/python/src/generated/tables.h            py::enum_ definitions and per-struct field tables
+  bindings/python/src/generated/option_inits.h      def_<class>_init(cls): keyword constructors of Python option
+                                                    classes over some of a struct's fields (PY_OPTION_INITS)
   bindings/python/src/generated/<header>_methods.h  def_<class>_methods(cls): the pass-through methods of a Python
                                                     class (PY_METHODS, PY_CLASSES), called by its hand-written file
   bindings/rust/o3d/src/generated/<module>.rs        c_enum!/options! invocations and `impl` blocks of pass-through
@@ -33,8 +35,10 @@ What the headers say, and how each language shows it:
     count, seed, string, path, array or matrix, optional array, another class); it returns the value or new
     object the call writes, else (a geometry's edit) the object itself to chain; its doc is the C @brief.
     C++: const when the C handle is, trailing optional arrays as an overload without them; Rust: `Result<...>`,
-    an optional array as Option<[f64; N]>; Python: the call runs under the handle's lock with the GIL released,
-    keywords and defaults from PY_METHODS, a call that may reallocate arrays copy-on-write first (PY_RESIZING).
+    an optional array as Option<[f64; N]>; Python: the call runs under the handle's lock with the GIL released
+    (or as the class runs its calls, PY_CLASSES), keywords and defaults from PY_METHODS (with Open3D keywords the C
+    call lacks, accepted at their default only), a getter and its setter listed under one "@name" a read-write
+    property, a call that may reallocate arrays copy-on-write first (PY_RESIZING).
 Names that cannot be derived, and what a language leaves out or writes by hand, are the tables below.
 """
 import argparse
@@ -108,6 +112,23 @@ PY_FIELD_ENUMS = {"point_color_option": "PointColorOption", "mesh_color_option":
 PY_OMIT = {"o3d_fgr_options_t": {"num_threads"},
            "o3d_render_option_t": {"light_position", "light_color", "light_diffuse_power", "light_specular_power",
                                    "light_specular_shininess"}}
+
+# Python option classes whose constructor takes some fields of a C options struct by keyword: class -> (struct, the
+# fields in Open3D's order, {field: a default other than the init's, as Open3D's constructor has it}, doc or None).
+PY_OPTION_INITS = {
+    "GlobalOptimizationConvergenceCriteria": ("o3d_global_optimization_options_t", (
+        "max_iteration", "min_relative_increment", "min_relative_residual_increment", "min_right_term", "min_residual",
+        "max_iteration_lm", "upper_scale_factor", "lower_scale_factor"), {},
+        "Open3D's defaults; the keyword arguments are an o3d extra (Open3D sets the attributes afterwards)."),
+    # As Open3D 0.20: the keyword constructor defaults max_correspondence_distance to 0.03 while
+    # GlobalOptimizationOption() gives 0.075; kept, so Open3D scripts get the same result.
+    "GlobalOptimizationOption": ("o3d_global_optimization_options_t", (
+        "max_correspondence_distance", "edge_prune_threshold", "preference_loop_closure", "reference_node"),
+        {"max_correspondence_distance": "0.03"}, None),
+    "ICPConvergenceCriteria": ("o3d_icp_options_t", ("relative_fitness", "relative_rmse", "max_iteration"), {}, None),
+    "RANSACConvergenceCriteria": ("o3d_ransac_options_t", ("max_iteration", "confidence"), {},
+                                  "Stop after max_iteration hypotheses, or once a hypothesis is this confidently the best."),
+}
 
 # ---- pass-through methods (tools/binding_methods.py): the handles' classes and the functions each shows ----
 HANDLE_TYPES = {"o3d_trianglemesh_t": "TriangleMesh", "o3d_tsdf_volume_t": "TSDFVolume", "o3d_kdtree_t": "KDTreeFlann"}  # the class of a handle parameter (default: camel case)
@@ -305,11 +326,14 @@ RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False)
 
 # Python: C function -> (Python class, name (None: the derived one), {C parameter: "keyword=default"}); a keyword
 # left out is the C name; a default is written in Python (True, None, 0.5, inf, (0.0, 0.0, 1.0)) or as a constant.
+# "+kw": "=default" is a keyword of Open3D's the C call lacks (default True, False or None), placed after the entry
+# before it: accepted, and any other value raises UnsupportedError.
 PY_SPATIAL = {"transform": ("transform", {"transform": "transformation"}),
            "translate": ("translate", {"relative": "=True"}), "rotate": ("rotate", {"rotation": "R", "center": "=None"}),
            "scale": ("scale", {"center": "=None"}), "get_min_bound": (None, {}), "get_max_bound": (None, {}),
            "get_center": (None, {})}
 PY_NORMALS = {"normalized": "=True"}
+PY_NO_UV = {"+create_uv_map": "=False"}  # the C primitives make no UVs
 PY_ITERATIONS = {"number_of_iterations": "=1", "filter_scope": "=O3D_FILTER_SCOPE_ALL"}
 PY_METHODS = {
     **{f"o3d_pointcloud_{c}": ("PointCloud", *v) for c, v in PY_SPATIAL.items()},
@@ -351,6 +375,17 @@ PY_METHODS = {
         "cylinder_radius": "=1.0", "cone_radius": "=1.5", "cylinder_height": "=5.0", "cone_height": "=4.0",
         "resolution": "=20", "cylinder_split": "=4", "cone_split": "=1"}),
     "o3d_trianglemesh_create_coordinate_frame": ("TriangleMesh", None, {"size": "=1.0", "origin": "=(0.0, 0.0, 0.0)"}),
+    "o3d_trianglemesh_create_box": ("TriangleMesh", None, {"width": "=1.0", "height": "=1.0", "depth": "=1.0", **PY_NO_UV,
+                                                           "+map_texture_to_each_face": "=False"}),
+    "o3d_trianglemesh_create_sphere": ("TriangleMesh", None, {"radius": "=1.0", "resolution": "=20", **PY_NO_UV}),
+    "o3d_trianglemesh_create_cylinder": ("TriangleMesh", None, {"radius": "=1.0", "height": "=2.0", "resolution": "=20",
+                                                                "split": "=4", **PY_NO_UV}),
+    "o3d_trianglemesh_create_cone": ("TriangleMesh", None, {"radius": "=1.0", "height": "=2.0", "resolution": "=20",
+                                                            "split": "=1", **PY_NO_UV}),
+    **{f"o3d_trianglemesh_create_{c}": ("TriangleMesh", None, {"radius": "=1.0", **PY_NO_UV})
+       for c in ("tetrahedron", "octahedron", "icosahedron")},
+    "o3d_trianglemesh_sample_points_poisson_disk": ("TriangleMesh", None, {"init_factor": "=5.0", "+pcl": "=None",
+                                                                           "use_triangle_normal": "=False", "seed": "=None"}),
     "o3d_lineset_paint_uniform_color": ("LineSet", None, {"rgb": "color"}),
     "o3d_lineset_transform": ("LineSet", None, {"transform": "transformation"}),
     "o3d_offscreen_renderer_setup_camera_fov": ("OffscreenRenderer", "setup_camera", {
@@ -377,18 +412,36 @@ PY_METHODS = {
     "o3d_lineset_create_from_triangle_mesh": ("LineSet", None, {}),
     "o3d_octree_convert_from_point_cloud": ("Octree", None, {"pc": "point_cloud", "size_expand": "=0.01"}),
     "o3d_octree_num_leaf_nodes": ("Octree", "_num_leaf_nodes", {}),
+    **{f"o3d_selection_polygon_volume_{c}_{a}": ("SelectionPolygonVolume", f"@{a}", {}) for c in ("get", "set")
+       for a in ("axis_min", "axis_max")},
+    **{f"o3d_pose_graph_{c}": ("PoseGraph", f"_{c}", {}) for c in (  # (o3d/pipelines/_pose_graph.py shows them)
+        "num_nodes", "num_edges", "add_node", "get_node", "set_node", "clear")},
+    **{f"o3d_visualizer_{c}": ("Visualizer", None, {}) for c in (
+        "poll_events", "update_renderer", "run", "close", "send_mouse_move", "send_scroll")},
+    **{f"o3d_visualizer_{c}": ("VisualizerWithEditing", None, {}) for c in ("is_selecting", "crop_to_selection")},
+    "o3d_visualizer_view_scale": ("ViewControl", None, {}),
+    "o3d_visualizer_view_change_field_of_view": ("ViewControl", None, {"step": "=0.45"}),
+    "o3d_visualizer_view_get_field_of_view": ("ViewControl", "get_field_of_view", {}),
+    "o3d_visualizer_view_reset": ("ViewControl", "reset_camera_local_rotate", {}),
+    "o3d_visualizer_set_view_status": ("ViewControl", None, {"json": "view_status_str"}),
     **{f"o3d_tsdf_volume_{c}": ("TSDFVolume", None, {}) for c in TSDF_CALLS},
     **{f"o3d_tsdf_volume_get_{c}": ("TSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[:3]},
     **{f"o3d_tsdf_volume_get_{c}": ("UniformTSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[3:6]},
     **{f"o3d_tsdf_volume_get_{c}": ("ScalableTSDFVolume", "@" + c, {}) for c in TSDF_PROPERTIES[6:]},
 }
-# Python class -> (handle, whether a method that changes the object returns it, as Open3D's geometries do).
+# Python class -> (handle, whether a method that changes the object returns it, as Open3D's geometries do[, how the
+# class runs a C call `{call}` (a lambda taking the handle) whose status names `{filename}`: else under its lock]).
+# The viewer's classes run theirs on the window's thread with the GIL released (its callbacks take it back).
+PY_VIS = "call({target}, {{call}}{{filename}});"
 PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_trianglemesh_t", True),
               "LineSet": ("o3d_lineset_t", True), "Image": ("o3d_image_t", False), "OffscreenRenderer": ("o3d_offscreen_renderer_t", False),
               "Open3DScene": ("o3d_offscreen_renderer_t", False), "TSDFVolume": ("o3d_tsdf_volume_t", False),
               "UniformTSDFVolume": ("o3d_tsdf_volume_t", False), "ScalableTSDFVolume": ("o3d_tsdf_volume_t", False),
               "VoxelGrid": ("o3d_voxelgrid_t", False), "SelectionPolygonVolume": ("o3d_selection_polygon_volume_t", False),
-              "Octree": ("o3d_octree_t", False)}
+              "Octree": ("o3d_octree_t", False), "PoseGraph": ("o3d_pose_graph_t", False),
+              "Visualizer": ("o3d_visualizer_t", False, PY_VIS.format(target="self")),
+              "VisualizerWithEditing": ("o3d_visualizer_t", False, PY_VIS.format(target="self")),
+              "ViewControl": ("o3d_visualizer_t", False, PY_VIS.format(target="self.v()"))}
 PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage",
             "o3d_voxelgrid_t": "PyVoxelGrid", "o3d_lineset_t": "PyLineSet"}  # the extension's classes
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
@@ -740,6 +793,31 @@ def gen_python(structs, groups):
     return "\n".join(out)
 
 
+def gen_python_option_inits(structs, groups):
+    """generated/option_inits.h: def_<class>_init(cls) per PY_OPTION_INITS class, its keyword constructor."""
+    by_name = {s.name: s for s in structs}
+    out = [f"// {HEADER}", "// Keyword constructors of the Python option classes over some fields of a C options struct (PY_OPTION_INITS),",
+           "// from capi/include/o3d/*.h: def_<class>_init(cls) on a class holding the struct as `o` (made with its init).",
+           "#pragma once", "", '#include "../common.h"', "", "namespace o3dpy {"]
+    for cls, (struct, names, defaults, doc) in PY_OPTION_INITS.items():
+        items = {it.name: it for it in by_name[struct].items if it.kind == "field"}
+        params, sets, args = [], [], []
+        for n in names:
+            it = items[n]
+            flag = it.typedef == "o3d_bool"
+            params.append(f"{'bool' if flag else it.field['type']} {n}")
+            sets.append(f"t.o.{n} = {n}{' ? 1 : 0' if flag else ''};")
+            args.append(f'py::arg("{n}") = {defaults.get(n) or f"d.{n}" + (" != 0" if flag else "")}')
+        out += ["", f"/// {cls}({', '.join(names)}): the fields of {struct}, by position or keyword.",
+                "template <typename T>", f"void def_{py_class_stem(cls)}_init(py::class_<T>& cls) {{",
+                f"    const {struct} d = init_of(&{by_name[struct].init});",
+                f"    cls.def(py::init([]({', '.join(params)}) {{", "                T t;"] + \
+            [f"                {x}" for x in sets] + ["                return t;", "            }),",
+                                                     "            " + ", ".join(args + ([c_string(doc)] if doc else [])) + ");", "}"]
+    out += ["", "}  // namespace o3dpy", ""]
+    return "\n".join(out)
+
+
 def py_class_stem(cls):
     """PointCloud -> point_cloud, Open3DScene -> open3d_scene."""
     return re.sub(r"(?<!^)(?=[A-Z][a-z])", "_", cls).lower()
@@ -795,10 +873,12 @@ def py_method_doc(m, keywords, returns_self):
     return sentence(py_doc(text)) + (" Returns self." if returns_self else "")
 
 
-def gen_py_method(m, cls, groups):
+def gen_py_method(m, cls, groups, setter=None):
     """One `cls.def(...)`: convert the arguments (GIL held), run the C call under the handle's lock with the GIL
-    released (a static function: just without the GIL), check its status, return the value, new object or self."""
-    handle, chains = PY_CLASSES[cls]
+    released (a static function: just without the GIL), check its status, return the value, new object or self.
+    A property ("@name") is read-only, or read-write when `setter` (the Method listed under the same "@name") is
+    given."""
+    handle, chains, *runner = PY_CLASSES[cls]
     _, name, spec = PY_METHODS[m.c]
     keywords, defaults = {}, {}
     for c, text in spec.items():
@@ -808,8 +888,23 @@ def gen_py_method(m, cls, groups):
             defaults[c] = default
     lambda_params, pre, args, py_args = [], [], [], []
     path = None
-    for p in m.params:
+    params = list(m.params)
+    previous = None
+    for c in spec:  # keywords the C call lacks ("+kw": "=default"), after the entry before them in the spec
+        if c.startswith("+"):
+            at = next((i + 1 for i, p in enumerate(params) if p["name"] == previous), len(params))
+            params.insert(at, {"name": c, "kind": "unsupported"})
+        previous = c
+    for p in params:
         kw = keywords.get(p["name"], p["name"])
+        if p["kind"] == "unsupported":  # accepted for Open3D's signature; only the default is supported
+            kw, default = kw[1:], defaults[p["name"]]
+            test = {"False": kw, "True": f"!{kw}", "None": f"!{kw}.is_none()"}[default]
+            lambda_params.append(f"bool {kw}" if default in ("True", "False") else f"py::handle {kw}")
+            pre.append(f'if ({test}) throw StatusError{{O3D_ERROR_UNSUPPORTED, "{name or m.default_name(handle)}: '
+                       f'{kw} other than {default} is not supported", ""}};')
+            py_args.append(f'py::arg("{kw}") = {py_default(default, p, groups)}')
+            continue
         lp, conversion, arg = py_param(p, kw, groups)
         lambda_params.append(lp)
         if conversion:
@@ -839,6 +934,10 @@ def gen_py_method(m, cls, groups):
     if m.static:
         call = f"{m.c}(" + ", ".join(outs + args) + ")"
         body.append(f"check(nogil([&] {{ {locks}return {call}; }}){filename});")
+    elif runner:  # the class runs its C calls itself
+        lambda_params.insert(0, "Self& self")
+        call = f"{locks}return {m.c}(" + ", ".join(outs + ["c_"] + args) + ")"
+        body.append(runner[0].format(call=f"[&]({handle}* c_) {{ {call}; }}", filename=filename))
     else:
         call = f"{locks}return {m.c}(" + ", ".join(outs + ["c_"] + args) + ")"
         if m.const:
@@ -853,8 +952,9 @@ def gen_py_method(m, cls, groups):
     if m.new:
         body.append(f"return {'Self' if name == '__init__' else PY_TYPES[m.new]}(out);")
     elif m.out is not None:
+        rows, cols = binding_methods.matrix(m.out) or (m.out["array"], 0)  # a matrix, else a 1-D array
         body.append({"bool": "return out != 0;", "array": "return vec3_to_array(out.data());" if m.out["array"] == 3
-                     else f"return mat_to_array(out.data(), {m.out['array']}, 0);",
+                     else f"return mat_to_array(out.data(), {rows}, {cols});",
                      "enum": f"return ({py_enum_types(m.out_group)[0][0] if m.out_group else ''})out;"
                      }.get(m.out_kind, "return out;"))
     elif returns_self:
@@ -863,9 +963,11 @@ def gen_py_method(m, cls, groups):
     if name == "__init__":  # a constructor: the class is made from the new handle
         return ["    cls.def(", f"        py::init([]({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + \
             ["        }),", "        " + ", ".join(py_args + [doc]) + ");"]
-    if name and name.startswith("@"):  # a read-only property (a const getter without parameters)
-        return [f"    cls.def_property_readonly(", f'        "{name[1:]}",', f"        []({', '.join(lambda_params)}) {{"] + \
-            [f"            {b}" for b in body] + ["        },", f"        {doc});"]
+    if name and name.startswith("@"):  # a property (a const getter without parameters, and its setter's lambda)
+        lines = [f"        []({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + ["        },"]
+        if setter:
+            lines += gen_py_method(setter, cls, groups)[2:-1]  # the setter's lambda
+        return [f"    cls.def_property{'' if setter else '_readonly'}(", f'        "{name[1:]}",'] + lines + [f"        {doc});"]
     return [f"    cls.{'def_static' if m.static else 'def'}(", f'        "{name or m.default_name(handle)}",',
             f"        []({', '.join(lambda_params)}) {{"] + [f"            {b}" for b in body] + \
         ["        },", "        " + ", ".join(py_args + [doc]) + ");"]
@@ -874,7 +976,8 @@ def gen_py_method(m, cls, groups):
 def gen_python_methods(model, groups, stem, classes):
     """generated/<header>_methods.h: def_<class>_methods(cls) per Python class, defining its pass-through methods."""
     out = [f"// {HEADER}", f"// The methods of {', '.join(classes)} that pass their arguments to one C function, from",
-           "// capi/include/o3d/*.h: def_<class>_methods(cls) defines them on the class (whose `h` is its locked handle).",
+           "// capi/include/o3d/*.h: def_<class>_methods(cls) defines them on the class (whose `h` is its locked handle, or",
+           "// that runs a call itself: PY_CLASSES).",
            "#pragma once", "", "#include <array>", "#include <limits>", "#include <optional>", "",
            '#include "../geometry_types.h"', "", "namespace o3dpy {"]
     for cls in classes:
@@ -882,8 +985,12 @@ def gen_python_methods(model, groups, stem, classes):
         wanted = {c for c, spec in PY_METHODS.items() if spec[0] == cls}
         out += ["", f"/// The pass-through methods of {cls} ({handle}).", "template <typename Self, typename... Bases>",
                 f"void def_{py_class_stem(cls)}_methods(py::class_<Self, Bases...>& cls) {{"]
-        for m in binding_methods.methods(model, groups, handle, wanted):
-            out += gen_py_method(m, cls, groups)
+        ms = binding_methods.methods(model, groups, handle, wanted)
+        # A property's setter: a method with one parameter, listed under its getter's "@name".
+        setters = {PY_METHODS[m.c][1]: m for m in ms if (PY_METHODS[m.c][1] or "")[:1] == "@" and len(m.params) == 1}
+        for m in ms:
+            if m not in setters.values():
+                out += gen_py_method(m, cls, groups, setters.get(PY_METHODS[m.c][1]))
         out.append("}")
     out += ["", "}  // namespace o3dpy", ""]
     return "\n".join(out)
@@ -1071,7 +1178,8 @@ def outputs(include_dir):
     rust_structs = [Struct(s, {k: v[1] for k, v in RUST_COMPOSITES.items()}) for s in raw_structs]
     py_structs = [Struct(s, {}) for s in raw_structs]
     files = {CPP_DIR / "enums.hpp": gen_cpp_enums(groups), CPP_DIR / "options.hpp": gen_cpp_options(cpp_structs, groups),
-             PY_DIR / "tables.h": gen_python(py_structs, groups)}
+             PY_DIR / "tables.h": gen_python(py_structs, groups),
+             PY_DIR / "option_inits.h": gen_python_option_inits(py_structs, groups)}
     files.update({RUST_DIR / name: text for name, text in gen_rust(rust_structs, groups, model).items()})
     files.update({CPP_DIR / f"{stem}.hpp": gen_cpp_methods(model, groups, h) for h, (_, stem, _, _) in CPP_CLASSES.items()})
     files.update(py_method_files(model, groups))

@@ -4,8 +4,9 @@
 // GlobalOptimization{GaussNewton,LevenbergMarquardt,ConvergenceCriteria,Option}, global_optimization and
 // o3d.io.read_pose_graph / write_pose_graph, over posegraph.h.
 #include <cstdio>
-#include <tuple>
 
+#include "generated/option_inits.h"
+#include "generated/posegraph_methods.h"
 #include "registration_types.h"
 
 namespace o3dpy {
@@ -171,31 +172,12 @@ void declare_pose_graph(py::module_& m) {
 }
 
 void define_pose_graph(py::module_& m) {
-    static_cast<py::class_<PyPoseGraph>>(m.attr("PoseGraph"))
-        .def(py::init<>(), "An empty graph.")
+    auto graph = static_cast<py::class_<PyPoseGraph>>(m.attr("PoseGraph"));
+    def_pose_graph_methods(graph);
+    graph.def(py::init<>(), "An empty graph.")
         .def(py::init(&clone), py::arg("other"), "Copy constructor (a deep copy).")
         .def("__copy__", &clone)
         .def("__deepcopy__", [](const PyPoseGraph& g, py::handle) { return clone(g); }, py::arg("memo"))
-        .def("_num_nodes", [](const PyPoseGraph& g) { return count(g, true); })
-        .def("_num_edges", [](const PyPoseGraph& g) { return count(g, false); })
-        .def("_get_node",
-             [](const PyPoseGraph& g, int64_t i) {
-                 double pose[16];
-                 size_t k = as_index(i);
-                 locked_const(g.h, [&](const o3d_pose_graph_t* p) { return o3d_pose_graph_get_node(pose, p, k); });
-                 return readonly_matrix(pose, 4, 4);
-             })
-        .def("_set_node",
-             [](PyPoseGraph& g, int64_t i, py::handle pose) {
-                 auto T = as_mat4(pose, "pose");
-                 size_t k = as_index(i);
-                 locked_mut(g.h, [&](o3d_pose_graph_t* p) { return o3d_pose_graph_set_node(p, k, T.data()); });
-             })
-        .def("_add_node",
-             [](PyPoseGraph& g, py::handle pose) {
-                 auto T = mat4_or_identity(pose, "pose");
-                 locked_mut(g.h, [&](o3d_pose_graph_t* p) { return o3d_pose_graph_add_node(p, T.data()); });
-             })
         .def("_get_edge",
              [](const PyPoseGraph& g, int64_t i) {
                  o3d_pose_graph_edge_t e = init_of(&o3d_pose_graph_edge_init);
@@ -215,7 +197,6 @@ void define_pose_graph(py::module_& m) {
                  o3d_pose_graph_edge_t e = make_edge(s, t, T, info, uncertain, confidence);
                  locked_mut(g.h, [&](o3d_pose_graph_t* p) { return o3d_pose_graph_add_edge(p, &e); });
              })
-        .def("_clear", [](PyPoseGraph& g) { locked_mut(g.h, [&](o3d_pose_graph_t* p) { return o3d_pose_graph_clear(p); }); })
         .def("__repr__", [](const PyPoseGraph& g) {
             return "PoseGraph with " + std::to_string(count(g, true)) + " nodes and " + std::to_string(count(g, false)) +
                    " edges.";
@@ -237,26 +218,9 @@ void define_pose_graph(py::module_& m) {
         .def(py::init<const LevenbergMarquardt&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const LevenbergMarquardt&) { return std::string("GlobalOptimizationLevenbergMarquardt"); });
 
-    const o3d_global_optimization_options_t d = defaults();
     auto criteria = static_cast<py::class_<Criteria>>(m.attr("GlobalOptimizationConvergenceCriteria"));
-    criteria.def(py::init([](int32_t max_iteration, double min_relative_increment, double min_relative_residual_increment,
-                         double min_right_term, double min_residual, int32_t max_iteration_lm, double upper_scale_factor,
-                         double lower_scale_factor) {
-                 Criteria c;
-                 std::tie(c.o.max_iteration, c.o.min_relative_increment, c.o.min_relative_residual_increment,
-                          c.o.min_right_term, c.o.min_residual, c.o.max_iteration_lm, c.o.upper_scale_factor,
-                          c.o.lower_scale_factor) =
-                     std::make_tuple(max_iteration, min_relative_increment, min_relative_residual_increment,
-                                     min_right_term, min_residual, max_iteration_lm, upper_scale_factor, lower_scale_factor);
-                 return c;
-             }),
-             py::arg("max_iteration") = d.max_iteration, py::arg("min_relative_increment") = d.min_relative_increment,
-             py::arg("min_relative_residual_increment") = d.min_relative_residual_increment,
-             py::arg("min_right_term") = d.min_right_term, py::arg("min_residual") = d.min_residual,
-             py::arg("max_iteration_lm") = d.max_iteration_lm, py::arg("upper_scale_factor") = d.upper_scale_factor,
-             py::arg("lower_scale_factor") = d.lower_scale_factor,
-             "Open3D's defaults; the keyword arguments are an o3d extra (Open3D sets the attributes afterwards).")
-        .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
+    def_global_optimization_convergence_criteria_init(criteria);
+    criteria.def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const Criteria& c) {
             return "GlobalOptimizationConvergenceCriteria\n> max_iteration : " + std::to_string(c.o.max_iteration) +
                    "\n> min_relative_increment : " + g6(c.o.min_relative_increment) +
@@ -270,20 +234,9 @@ void define_pose_graph(py::module_& m) {
     auto option = static_cast<py::class_<Option>>(m.attr("GlobalOptimizationOption"));
     option.def(py::init<>(),
              "Open3D's defaults: max_correspondence_distance 0.075, edge_prune_threshold 0.25, preference_loop_closure 1.0, "
-             "reference_node -1 (the first node).")
-        .def(py::init([](double max_correspondence_distance, double edge_prune_threshold, double preference_loop_closure,
-                         int32_t reference_node) {
-                 Option p;
-                 std::tie(p.o.max_correspondence_distance, p.o.edge_prune_threshold, p.o.preference_loop_closure,
-                          p.o.reference_node) =
-                     std::make_tuple(max_correspondence_distance, edge_prune_threshold, preference_loop_closure, reference_node);
-                 return p;
-             }),
-             // As Open3D 0.20: the keyword constructor defaults max_correspondence_distance to 0.03 while
-             // GlobalOptimizationOption() gives 0.075; kept, so Open3D scripts get the same result.
-             py::arg("max_correspondence_distance") = 0.03, py::arg("edge_prune_threshold") = d.edge_prune_threshold,
-             py::arg("preference_loop_closure") = d.preference_loop_closure, py::arg("reference_node") = d.reference_node)
-        .def(py::init<const Option&>(), py::arg("other"), "Copy constructor")
+             "reference_node -1 (the first node).");
+    def_global_optimization_option_init(option);
+    option.def(py::init<const Option&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const Option& p) {
             return "GlobalOptimizationOption\n> max_correspondence_distance : " + g6(p.o.max_correspondence_distance) +
                    "\n> edge_prune_threshold : " + g6(p.o.edge_prune_threshold) +

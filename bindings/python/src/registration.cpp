@@ -7,8 +7,8 @@
 #include <memory>
 #include <optional>
 #include <sstream>
-#include <tuple>
 
+#include "generated/option_inits.h"
 #include "registration_types.h"
 
 namespace o3dpy {
@@ -308,14 +308,8 @@ void define_registration(py::module_& m) {
     def_kernel(sym);
 
     auto criteria = static_cast<py::class_<Criteria>>(m.attr("ICPConvergenceCriteria"));
+    def_icp_convergence_criteria_init(criteria);
     criteria
-        .def(py::init([](double rf, double rr, int32_t it) {
-                 Criteria c;
-                 std::tie(c.o.relative_fitness, c.o.relative_rmse, c.o.max_iteration) = std::make_tuple(rf, rr, it);
-                 return c;
-             }),
-             py::arg("relative_fitness") = dicp.relative_fitness, py::arg("relative_rmse") = dicp.relative_rmse,
-             py::arg("max_iteration") = dicp.max_iteration)
         .def(py::init<const Criteria&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const Criteria& c) {
             return "ICPConvergenceCriteria(relative_fitness=" + std::to_string(c.o.relative_fitness) + ", relative_rmse=" +

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "generated/option_inits.h"
 #include "registration_types.h"
 
 namespace o3dpy {
@@ -255,14 +256,8 @@ void define_registration_global(py::module_& m) {
                                  py::arg("normal_angle_threshold"), "normal_angle_threshold in radians, > 0.");
 
     auto ransac_criteria = static_cast<py::class_<RansacCriteria>>(m.attr("RANSACConvergenceCriteria"));
+    def_ransac_convergence_criteria_init(ransac_criteria);
     ransac_criteria
-        .def(py::init([](int32_t max_iteration, double confidence) {
-                 RansacCriteria c;
-                 std::tie(c.o.max_iteration, c.o.confidence) = std::make_tuple(max_iteration, confidence);
-                 return c;
-             }),
-             py::arg("max_iteration") = rd.max_iteration, py::arg("confidence") = rd.confidence,
-             "Stop after max_iteration hypotheses, or once a hypothesis is this confidently the best.")
         .def(py::init<const RansacCriteria&>(), py::arg("other"), "Copy constructor")
         .def("__repr__", [](const RansacCriteria& c) {
             char buf[64];

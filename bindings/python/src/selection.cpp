@@ -19,12 +19,6 @@ PyVolume new_volume() {
     return PyVolume(raw);
 }
 
-double get_double(const PyVolume& v, o3d_status (*get)(double*, const o3d_selection_polygon_volume_t*)) {
-    double out = 0;
-    locked_const(v.h, [&](const o3d_selection_polygon_volume_t* p) { return get(&out, p); });
-    return out;
-}
-
 std::string axis_name(const PyVolume& v) {
     o3d_axis axis = O3D_AXIS_Y;
     locked_const(v.h, [&](const o3d_selection_polygon_volume_t* p) {
@@ -77,18 +71,6 @@ void define_selection(py::module_& m) {
     def_selection_polygon_volume_methods(cls);
     cls.def(py::init(&new_volume), "An empty volume (axis Y, range [0, 0], no polygon).")
         .def_property("orthogonal_axis", &axis_name, &set_axis, "\"X\", \"Y\" or \"Z\".")
-        .def_property(
-            "axis_min", [](const PyVolume& v) { return get_double(v, &o3d_selection_polygon_volume_get_axis_min); },
-            [](PyVolume& v, double x) {
-                locked_mut(v.h, [&](o3d_selection_polygon_volume_t* p) { return o3d_selection_polygon_volume_set_axis_min(p, x); });
-            },
-            "Where the prism starts along the orthogonal axis.")
-        .def_property(
-            "axis_max", [](const PyVolume& v) { return get_double(v, &o3d_selection_polygon_volume_get_axis_max); },
-            [](PyVolume& v, double x) {
-                locked_mut(v.h, [&](o3d_selection_polygon_volume_t* p) { return o3d_selection_polygon_volume_set_axis_max(p, x); });
-            },
-            "Where the prism ends along the orthogonal axis.")
         .def_property("bounding_polygon", &polygon, &set_polygon,
                       "The corners (Vector3dVector); the coordinate along the orthogonal axis is ignored.")
         .def(

@@ -11,7 +11,7 @@
 #include <thread>
 #include <unordered_map>
 
-#include "geometry_types.h"
+#include "generated/visualizer_methods.h"
 
 namespace o3dpy {
 namespace {
@@ -187,25 +187,16 @@ void on_file(PyVis& v, o3d_status (*f)(o3d_visualizer_t*, const char*, A...), py
 
 void define_view_control(py::module_& m) {
     auto cls = static_cast<py::class_<PyViewControl>>(m.attr("ViewControl"));
+    def_view_control_methods(cls);
     cls.def("rotate", [](const PyViewControl& s, double x, double y, double, double) { on<View>(&o3d_visualizer_view_rotate)(s, x, y); },
             py::arg("x"), py::arg("y"), py::arg("xo") = 0.0, py::arg("yo") = 0.0,
             "Rotate as a left-button drag of (x, y) pixels (0.003 rad a pixel); xo, yo are accepted and unused.")
         .def("translate",
              [](const PyViewControl& s, double x, double y, double, double) { on<View>(&o3d_visualizer_view_translate)(s, x, y); },
              py::arg("x"), py::arg("y"), py::arg("xo") = 0.0, py::arg("yo") = 0.0, "Translate as a Ctrl + left drag.")
-        .def("scale", on<View>(&o3d_visualizer_view_scale), py::arg("scale"), "zoom += scale * 0.02, kept in [0.02, 2].")
-        .def("change_field_of_view", on<View>(&o3d_visualizer_view_change_field_of_view), py::arg("step") = 0.45,
-             "Field of view += step * 5 degrees, kept in [5, 90].")
-        .def("reset_camera_local_rotate", on<View>(&o3d_visualizer_view_reset), "Open3D's default view of the scene (the R key).")
         .def("set_view", &set_view, py::arg("front") = py::none(), py::arg("lookat") = py::none(),
              py::arg("up") = py::none(), py::arg("zoom") = py::none(),
              "o3d extra: set the values given (None keeps one) in one step; the view is unchanged if one is bad.")
-        .def("get_field_of_view",
-             [](View& self) {
-                 double fov = 0;
-                 call(self.v(), [&](o3d_visualizer_t* p) { return o3d_visualizer_view_get_field_of_view(&fov, p); });
-                 return fov;
-             })
         .def("convert_to_pinhole_camera_parameters",
              [](View& self) {
                  PyCameraParameters out;
@@ -230,9 +221,7 @@ void define_view_control(py::module_& m) {
                  check(o3d_buffer_view(&text, &size, buf.get()));
                  return std::string(reinterpret_cast<const char*>(text), size);
              },
-             "o3d extra: the view as Open3D's ViewTrajectory JSON (what Ctrl+C copies).")
-        .def("set_view_status", [](View& self, const std::string& json) { on<View>(&o3d_visualizer_set_view_status)(self, json.c_str()); },
-             py::arg("view_status_str"), "o3d extra: set the view from ViewTrajectory JSON (as Ctrl+V in Open3D).");
+             "o3d extra: the view as Open3D's ViewTrajectory JSON (what Ctrl+C copies).");
     const char* values[] = {"front", "lookat", "up", "zoom"};
     for (int i = 0; i < 4; ++i) {  // set_front, set_lookat, set_up, set_zoom: one value of set_view
         cls.def(("set_" + std::string(values[i])).c_str(), [i](View& self, py::handle x) {
@@ -251,6 +240,7 @@ void define_view_control(py::module_& m) {
 
 void define_visualizer_class(py::module_& m) {
     auto cls = static_cast<py::class_<PyVis>>(m.attr("Visualizer"));
+    def_visualizer_methods(cls);
     cls.def(py::init([] { return std::make_unique<PyVis>(false); }))
         .def("create_window",
              [](PyVis& v, const std::string& name, int64_t w, int64_t h, int64_t left, int64_t top, bool visible) {
@@ -266,16 +256,6 @@ void define_visualizer_class(py::module_& m) {
              "Open the window (visible=False: hidden, rendered through EGL, no display needed). Returns True; raises "
              "UnsupportedError when no window can be had (Open3D returns False).")
         .def("destroy_window", [](PyVis& v) { call(v, &o3d_visualizer_destroy_window), v.geometries.clear(), v.thread = {}; })
-        .def("poll_events",
-             [](PyVis& v) {
-                 int32_t open = 0;
-                 call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_poll_events(&open, p); });
-                 return open != 0;
-             },
-             "Handle events, draw if needed; False once the window was closed.")
-        .def("update_renderer", on<PyVis>(&o3d_visualizer_update_renderer))
-        .def("run", on<PyVis>(&o3d_visualizer_run), "Events, the animation callback and frames until the window closes.")
-        .def("close", on<PyVis>(&o3d_visualizer_close))
         .def("add_geometry", [](PyVis& v, py::handle g, bool reset) { return add_geometry(v, g, reset, false); },
              py::arg("geometry"), py::arg("reset_bounding_box") = true,
              "Draw a copy of a PointCloud, TriangleMesh, LineSet, VoxelGrid, bounding box or Image (flat, scaled to "
@@ -336,10 +316,8 @@ void define_visualizer_class(py::module_& m) {
         .def("send_key_event", on<PyVis>(&o3d_visualizer_send_key), py::arg("key"), py::arg("action") = 1, py::arg("mods") = 0,
              "o3d extra: deliver a key as the window does (GLFW key numbers: ord('R'); action 0 release, 1 press, "
              "2 repeat; mods 1 Shift, 2 Ctrl, 4 Alt).")
-        .def("send_mouse_move", on<PyVis>(&o3d_visualizer_send_mouse_move), py::arg("x"), py::arg("y"), "o3d extra: move the cursor to window pixel (x, y).")
         .def("send_mouse_button", on<PyVis>(&o3d_visualizer_send_mouse_button), py::arg("button"), py::arg("action"), py::arg("mods") = 0,
              "o3d extra: a mouse button (0 left, 1 right, 2 middle) goes down (1) or up (0) at the cursor.")
-        .def("send_scroll", on<PyVis>(&o3d_visualizer_send_scroll), py::arg("dx"), py::arg("dy"), "o3d extra: a wheel turn (dy steps of zoom).")
         .def("play_view_trajectory",
              [](PyVis& v, py::handle path, py::handle capture_dir, bool depth) {
                  const std::string file = path_of(path), dir = capture_dir.is_none() ? "" : path_of(capture_dir);
@@ -385,8 +363,9 @@ void define_visualizer(py::module_& m) {
                      "o3d's own binding of the key; None removes it.");
     def_key_callback(key, "register_key_action_callback", &o3d_visualizer_register_key_action_callback, &on_key_action,
                      "callback_func(vis, action, mods) -> bool, on press (1), repeat (2) and release (0) of key.");
-    static_cast<py::class_<PyVisEdit, PyVis>>(m.attr("VisualizerWithEditing"))
-        .def(py::init([](double, bool, const std::string& directory) {
+    auto edit = static_cast<py::class_<PyVisEdit, PyVis>>(m.attr("VisualizerWithEditing"));
+    def_visualizer_with_editing_methods(edit);
+    edit.def(py::init([](double, bool, const std::string& directory) {
                  auto v = std::make_unique<PyVisEdit>();
                  check(o3d_visualizer_set_crop_directory(v->get(), directory.c_str()));
                  return v;
@@ -404,13 +383,6 @@ void define_visualizer(py::module_& m) {
             if (mesh) return py::cast(PyTriangleMesh(mesh));
             return py::none();
         }, "The last crop (a PointCloud or a TriangleMesh), or None before any.")
-        .def("crop_to_selection", [](PyVis& v) { call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_crop_to_selection(p); }); },
-             "Crop to the current selection now, as key C (o3d extra).")
-        .def("is_selecting", [](PyVis& v) {
-            o3d_bool out = 0;
-            call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_is_selecting(&out, p); });
-            return out != 0;
-        }, "Whether the view is locked for selecting (key K; o3d extra).")
         .def("get_picked_points", [](PyVis& v) {
             size_t n = 0;
             call(v, [&](o3d_visualizer_t* p) { return o3d_visualizer_get_picked_points(nullptr, 0, &n, p); });

@@ -52,12 +52,12 @@ class PoseGraphNode:
 
     @property
     def pose(self):
-        return self._graph._get_node(self._i) if self._graph is not None else self._pose
+        return _matrix(self._graph._get_node(self._i), 4, "pose") if self._graph is not None else self._pose
 
     @pose.setter
     def pose(self, value):
         if self._graph is not None:
-            self._graph._set_node(self._i, value)
+            self._graph._set_node(self._i, _matrix(value, 4, "pose"))
         else:
             self._pose = _matrix(value, 4, "pose")
 

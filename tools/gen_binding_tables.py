@@ -290,8 +290,8 @@ RUST_METHODS = {
     "o3d_camera_trajectory_size": "len", "o3d_camera_trajectory_clear": None, "o3d_kdtree_size": "len",
     "o3d_kdtree_dimension": None, "o3d_kdtree_create_from_pointcloud": "new", "o3d_kdtree_create_from_feature": "from_feature", "o3d_octree_create": "new", "o3d_octree_convert_from_point_cloud": None, "o3d_octree_num_leaf_nodes": None,
     "o3d_selection_polygon_volume_create": "new",
-    **{f"o3d_selection_polygon_volume_{n}": None for n in (  # (read_json: by hand, its path is converted first)
-        "get_orthogonal_axis", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
+    **{f"o3d_selection_polygon_volume_{n}": None for n in (
+        "read_json", "get_orthogonal_axis", "set_orthogonal_axis", "get_axis_min", "set_axis_min", "get_axis_max", "set_axis_max",
         "crop_point_cloud", "crop_triangle_mesh")},
     **{f"o3d_visualizer_{n}": None for n in ("is_selecting", "crop_to_selection", "set_crop_directory")},
     "o3d_tsdf_volume_create_uniform": "new_uniform", "o3d_tsdf_volume_create_scalable": "new_scalable",
@@ -1120,9 +1120,13 @@ def gen_rust_methods(model, groups, handle):
         out.append(f"    /// {rust_doc(re.sub(r'NULL', 'None', m.brief))}")
         if m.new:  # a new object, owned through its type's adopting constructor
             new_ty = type_name(m.new, HANDLE_TYPES)
+            # A string or path is converted before the adopting closure (whose C status cannot carry its error).
+            strings = [(p["name"], arg[:-len(".as_ptr()")]) for p, arg in zip(m.params, args) if p["kind"] in ("string", "path")]
+            args = [f"{p['name']}.as_ptr()" if p["kind"] in ("string", "path") else arg for p, arg in zip(m.params, args)]
             call = f"sys::{m.c}(" + ", ".join(["out"] + me + args) + ")"
             out += ["    #[allow(clippy::too_many_arguments)]"] if len(recv + params) > 7 else []
             out += [f"    pub fn {name}({sig}) -> Result<{new_ty}> {{"] + rust_conversions(m) + [
+                f"        let {n} = {conversion};" for n, conversion in strings] + [
                     "        // SAFETY: a valid handle; pointers to values that live for the call.",
                     f"        {RUST_ADOPT[m.new]}(|out| unsafe {{ {call} }})", "    }"]
             continue

@@ -1,7 +1,6 @@
 //! `SelectionPolygonVolume` (o3d.visualization.SelectionPolygonVolume): a prism over a polygon whose
 //! extent along the orthogonal axis is `[axis_min, axis_max]`; cropping keeps what lies inside. The
-//! setters, range getters and crops are generated; written here: `read_json` (its path is converted
-//! before the call), the enum getter and the variable-length arrays.
+//! reader, getters, setters and crops are generated; written here: the variable-length arrays.
 use std::fmt;
 use std::path::Path;
 
@@ -26,13 +25,6 @@ handle! {
 }
 
 impl SelectionPolygonVolume {
-    /// read_selection_polygon_volume: a volume from Open3D's JSON file.
-    pub fn read_json(path: impl AsRef<Path>) -> Result<SelectionPolygonVolume> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: out-pointer and a NUL-terminated path.
-        new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_read_json(out, path.as_ptr()) })
-    }
-
     /// The polygon's corners, in order.
     pub fn get_bounding_polygon(&self) -> Result<Vec<[f64; 3]>> {
         // SAFETY: a valid handle; `out` holds `cap` rows of 3 doubles.

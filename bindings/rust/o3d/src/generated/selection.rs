@@ -21,6 +21,12 @@ impl SelectionPolygonVolume {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::selection::new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_create(out) })
     }
+    /// read_selection_polygon_volume: a volume from Open3D's JSON file (also what a VisualizerWithEditing crop is described by).
+    pub fn read_json(path: impl AsRef<Path>) -> Result<SelectionPolygonVolume> {
+        let path = c_path(path.as_ref())?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::selection::new_volume(|out| unsafe { sys::o3d_selection_polygon_volume_read_json(out, path.as_ptr()) })
+    }
     /// SelectionPolygonVolume.orthogonal_axis.
     pub fn get_orthogonal_axis(&self) -> Result<Axis> {
         let mut out = 0;

@@ -250,6 +250,7 @@ RUST_METHODS = {
     "o3d_visualizer_has_geometry": None, "o3d_visualizer_poll_events": None, "o3d_visualizer_update_renderer": None,
     "o3d_visualizer_run": None, "o3d_visualizer_close": None, "o3d_visualizer_send_key": None,
     "o3d_visualizer_send_mouse_move": None, "o3d_visualizer_send_mouse_button": None,
+    "o3d_visualizer_capture_screen_float_buffer": None, "o3d_visualizer_capture_depth_float_buffer": None,
     "o3d_visualizer_send_scroll": None, "o3d_visualizer_capture_screen_image": None,
     "o3d_visualizer_capture_depth_image": None, "o3d_visualizer_view_rotate": None,
     "o3d_visualizer_view_translate": None, "o3d_visualizer_view_scale": None,

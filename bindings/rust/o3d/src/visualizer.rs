@@ -35,7 +35,7 @@ use o3d_sys as sys;
 
 use crate::camera::{PinholeCameraParameters, PinholeIntrinsic};
 use crate::error::{check, Result};
-use crate::image::{new_image, Image};
+use crate::image::Image;
 use crate::io::{c_path, c_string, new_buffer};
 use crate::pointcloud::PointCloud;
 use crate::progress::with_progress;
@@ -251,18 +251,6 @@ impl Visualizer {
         check(unsafe { register(self.raw(), key, Some(key_trampoline), slot.0.as_ptr().cast()) })?;
         self.keys.insert(key, slot);
         Ok(())
-    }
-
-    /// capture_screen_float_buffer: the frame as RGB `f32` in [0, 1].
-    pub fn capture_screen_float_buffer(&self) -> Result<Image> {
-        // SAFETY: out-pointer and valid handle.
-        new_image(|out| unsafe { sys::o3d_visualizer_capture_screen_float_buffer(out, self.raw(), 1) })
-    }
-
-    /// capture_depth_float_buffer: `f32` metres along the optical axis, 0 where nothing was drawn.
-    pub fn capture_depth_float_buffer(&self) -> Result<Image> {
-        // SAFETY: out-pointer and valid handle.
-        new_image(|out| unsafe { sys::o3d_visualizer_capture_depth_float_buffer(out, self.raw(), 1) })
     }
 
     /// get_picked_points (editing): vertex indices of the first geometry added, in pick order.

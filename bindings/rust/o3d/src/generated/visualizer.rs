@@ -101,10 +101,20 @@ impl Visualizer {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_visualizer_send_scroll(self.raw(), dx, dy) })
     }
+    /// Visualizer.capture_screen_float_buffer: the frame as RGB float32 in `[0, 1]`.
+    pub fn capture_screen_float_buffer(&self) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_visualizer_capture_screen_float_buffer(out, self.raw(), 1) })
+    }
     /// Visualizer.capture_screen_image: the frame as an 8-bit RGB image file (PNG or JPEG by extension).
     pub fn capture_screen_image(&self, path: impl AsRef<Path>) -> Result<()> {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_visualizer_capture_screen_image(self.raw(), c_path(path.as_ref())?.as_ptr(), 1) })
+    }
+    /// Visualizer.capture_depth_float_buffer: float32 depth in metres along the optical axis, 0 where nothing was drawn.
+    pub fn capture_depth_float_buffer(&self) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_visualizer_capture_depth_float_buffer(out, self.raw(), 1) })
     }
     /// Visualizer.capture_depth_image: depth * `depth_scale` as a 16-bit PNG (Open3D's default scale 1000: millimetres), clamped to 65535.
     pub fn capture_depth_image(&self, path: impl AsRef<Path>, depth_scale: f64) -> Result<()> {

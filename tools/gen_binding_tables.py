@@ -227,6 +227,9 @@ CPP_METHODS = {
     "o3d_tsdf_volume_create_scalable": ("scalable", {"volume_unit_resolution": "16", "depth_sampling_stride": "4"}),
     **{f"o3d_tsdf_volume_{c}": (None, {}) for c in TSDF_CALLS},
     **{f"o3d_tsdf_volume_get_{c}": (c, {}) for c in TSDF_PROPERTIES},
+    **{f"o3d_pose_graph_{c}": (None, {}) for c in ("num_nodes", "num_edges", "add_node", "set_node", "clear")},
+    "o3d_pose_graph_get_node": ("node", {}),
+    **{f"o3d_feature_{c}": (None, {}) for c in ("dimension", "num", "resize")},
 }
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
@@ -242,7 +245,9 @@ CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/v
                "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "selection", "done", [
                    "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp"]),
                "o3d_tsdf_volume_t": ("TSDFVolume", "integration", "done", [
-                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp", "o3dpp/voxelgrid.hpp"])}
+                   "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp", "o3dpp/voxelgrid.hpp"]),
+               "o3d_pose_graph_t": ("PoseGraph", "posegraph", "done", ["o3dpp/span.hpp"]),
+               "o3d_feature_t": ("Feature", "feature", "done", [])}
 # C function -> Rust method name (None: the derived one).
 RUST_METHODS = {
     "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,

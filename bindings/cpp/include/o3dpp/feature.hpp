@@ -13,6 +13,7 @@
 #include "o3dpp/arrays.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
+#include "o3dpp/generated/feature.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
@@ -26,9 +27,12 @@ using FeatureArrayFns =
 }  // namespace detail
 
 /// @brief A `dimension` x `num` matrix of descriptors, stored descriptor by descriptor: descriptor i
-/// is the `dimension` doubles at data() + i * dimension(). Move-only; clone() deep-copies.
+/// is the `dimension` doubles at data() + i * dimension(). Move-only; clone() deep-copies. dimension(), num()
+/// and resize() are generated (detail::FeatureCalls).
 class Feature : public Owner<Feature, o3d_feature_t, &o3d_feature_destroy>,
-                public Arrays<Feature, FeatureArray, detail::FeatureArrayFns> {
+                public Arrays<Feature, FeatureArray, detail::FeatureArrayFns>,
+                public detail::FeatureCalls<Feature> {
+    friend class detail::FeatureCalls<Feature>;  // checks its calls with done
 public:
     /// @brief A `dimension` x `num` feature, all zeros.
     explicit Feature(std::size_t dimension = 0, std::size_t num = 0)
@@ -51,10 +55,6 @@ public:
     /// @brief Deep copy.
     Feature clone() const { return derive(&o3d_feature_clone); }
 
-    /// @brief Descriptor length (33 for FPFH).
-    std::size_t dimension() const { return query(&o3d_feature_dimension); }
-    /// @brief Number of descriptors (points).
-    std::size_t num() const { return query(&o3d_feature_num); }
     bool empty() const { return num() == 0; }
 
     /// @brief Writable view of the dimension() * num() values; valid until resize() or destruction.
@@ -69,9 +69,6 @@ public:
     }
     /// @brief Copy of the values.
     std::vector<double> get_data() const { return get_array<double>(FeatureArray::Data); }
-
-    /// @brief Resize (Open3D's Feature.resize): with the same dimension kept descriptors stay; new values are 0.
-    void resize(std::size_t dimension, std::size_t num) { check(o3d_feature_resize(get(), dimension, num)); }
 
     /// @brief Descriptors of points `indices` in that order, or with `invert` of every other point.
     Feature select_by_index(const std::vector<int64_t>& indices, bool invert = false) const {

@@ -16,6 +16,7 @@
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/options.hpp"
+#include "o3dpp/generated/posegraph.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/span.hpp"
 
@@ -52,8 +53,11 @@ struct PoseGraphEdge : detail::PoseGraphEdgeBase {
     bool operator!=(const PoseGraphEdge& o) const { return !(*this == o); }
 };
 
-/// @brief A pose graph: one pose (rigid 4x4) per node, and edges. Move-only; clone() deep-copies.
-class PoseGraph : public Owner<PoseGraph, o3d_pose_graph_t, &o3d_pose_graph_destroy> {
+/// @brief A pose graph: one pose (rigid 4x4) per node, and edges. Move-only; clone() deep-copies. The node
+/// methods are generated (detail::PoseGraphCalls).
+class PoseGraph : public Owner<PoseGraph, o3d_pose_graph_t, &o3d_pose_graph_destroy>,
+                  public detail::PoseGraphCalls<PoseGraph> {
+    friend class detail::PoseGraphCalls<PoseGraph>;  // checks its calls with done
 public:
     /// @brief An empty graph.
     PoseGraph() : Owner(make(&o3d_pose_graph_create)) {}
@@ -63,17 +67,6 @@ public:
     /// @brief Deep copy.
     PoseGraph clone() const { return derive(&o3d_pose_graph_clone); }
 
-    std::size_t num_nodes() const { return query(&o3d_pose_graph_num_nodes); }
-    std::size_t num_edges() const { return query(&o3d_pose_graph_num_edges); }
-
-    /// @brief Append a node (a finite rigid transform).
-    void add_node(const Mat4& pose = identity4()) { check(o3d_pose_graph_add_node(get(), pose.data())); }
-    Mat4 node(std::size_t index) const {
-        Mat4 pose{};
-        check(o3d_pose_graph_get_node(pose.data(), get(), index));
-        return pose;
-    }
-    void set_node(std::size_t index, const Mat4& pose) { check(o3d_pose_graph_set_node(get(), index, pose.data())); }
     std::vector<Mat4> nodes() const { return detail::collect(num_nodes(), [&](std::size_t i) { return node(i); }); }
 
     /// @brief Append an edge (node ids are checked by global_optimization).
@@ -93,9 +86,6 @@ public:
     std::vector<PoseGraphEdge> edges() const {
         return detail::collect(num_edges(), [&](std::size_t i) { return edge(i); });
     }
-
-    /// @brief Remove every node and edge.
-    void clear() { check(o3d_pose_graph_clear(get())); }
 };
 
 /// @brief Read Open3D's JSON pose graph. @see o3d.io.read_pose_graph

@@ -160,6 +160,10 @@ CPP_METHODS = {
     "o3d_offscreen_renderer_clear_geometries": ("clear", {}),
     "o3d_offscreen_renderer_setup_camera_lookat": (None, {"zoom": "0.7"}),
     "o3d_offscreen_renderer_setup_camera_fov": ("setup_camera", {}),
+    "o3d_offscreen_renderer_get_backend": ("backend", {}), "o3d_offscreen_renderer_render_to_image": (None, {}),
+    "o3d_offscreen_renderer_render_to_depth_image": (None, {"z_in_view_space": "false"}),
+    "o3d_offscreen_renderer_render_to_png": (None, {}),
+    "o3d_visualizer_capture_screen_float_buffer": (None, {}), "o3d_visualizer_capture_depth_float_buffer": (None, {}),
     **{f"o3d_{noun}_{c}": (None, {"relative": "true"} if c == "translate" else {}) for noun in ("pointcloud", "trianglemesh")
        for c in ("clear", "append", "transform", "translate", "rotate", "scale", "get_min_bound", "get_max_bound",
                  "get_center", "paint_uniform_color", "normalize_normals")},
@@ -234,7 +238,8 @@ CPP_METHODS = {
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
 CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/visualization.hpp"]),
-               "o3d_offscreen_renderer_t": ("OffscreenRenderer", "visualization", "done", ["o3dpp/span.hpp"]),
+               "o3d_offscreen_renderer_t": ("OffscreenRenderer", "visualization", "done", [
+                   "o3dpp/image.hpp", "o3dpp/span.hpp"]),
                "o3d_pointcloud_t": ("PointCloud", "pointcloud", "done", ["o3dpp/span.hpp"]),
                "o3d_trianglemesh_t": ("TriangleMesh", "trianglemesh", "done", [
                    "<limits>", "o3dpp/image.hpp", "o3dpp/pointcloud.hpp", "o3dpp/span.hpp"]),
@@ -256,6 +261,8 @@ RUST_METHODS = {
     "o3d_visualizer_run": None, "o3d_visualizer_close": None, "o3d_visualizer_send_key": None,
     "o3d_visualizer_send_mouse_move": None, "o3d_visualizer_send_mouse_button": None,
     "o3d_visualizer_capture_screen_float_buffer": None, "o3d_visualizer_capture_depth_float_buffer": None,
+    "o3d_offscreen_renderer_get_backend": "backend", "o3d_offscreen_renderer_render_to_image": None,
+    "o3d_offscreen_renderer_render_to_depth_image": None,
     "o3d_visualizer_send_scroll": None, "o3d_visualizer_capture_screen_image": None,
     "o3d_visualizer_capture_depth_image": None, "o3d_visualizer_view_rotate": None,
     "o3d_visualizer_view_translate": None, "o3d_visualizer_view_scale": None,

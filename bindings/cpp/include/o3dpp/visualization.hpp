@@ -70,10 +70,6 @@ public:
     /// @brief Take ownership of `owned` (must not be NULL).
     explicit OffscreenRenderer(o3d_offscreen_renderer_t* owned) : Owner(owned) {}
 
-    /// @brief The backend it runs on (Egl or Glfw, never Auto).
-    RenderBackend backend() const {
-        return static_cast<RenderBackend>(query(&o3d_offscreen_renderer_get_backend));
-    }
     /// @brief (width, height) in pixels.
     std::pair<int, int> size() const {
         int32_t w = 0, h = 0;
@@ -122,21 +118,6 @@ public:
         check(o3d_offscreen_renderer_get_camera(&p.intrinsic, p.extrinsic.data(), get()));
         return p;
     }
-
-    // ---- rendering ----
-    /// @brief RGB, 1 byte a channel.
-    Image render_to_image() {
-        return Image::adopt([&](o3d_image_t** out) { return o3d_offscreen_renderer_render_to_image(out, get()); });
-    }
-    /// @brief 1-channel float32: with `z_in_view_space` the distance along the camera's axis (0 where
-    /// nothing was drawn), else the depth buffer in [0, 1] (1 where nothing was drawn).
-    Image render_to_depth_image(bool z_in_view_space = false) {
-        return Image::adopt([&](o3d_image_t** out) {
-            return o3d_offscreen_renderer_render_to_depth_image(out, get(), z_in_view_space ? 1 : 0);
-        });
-    }
-    /// @brief Render and write a PNG file.
-    void render_to_png(const std::string& path) { check(o3d_offscreen_renderer_render_to_png(get(), path.c_str())); }
 };
 
 }  // namespace o3dpp

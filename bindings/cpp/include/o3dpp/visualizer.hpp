@@ -87,15 +87,7 @@ public:
         return register_key(key, std::move(callback), &o3d_visualizer_register_key_action_callback);
     }
 
-    // ---- captures (a frame is drawn for each) ----
-    /// @brief RGB float32 in [0, 1].
-    Image capture_screen_float_buffer() {
-        return Image::adopt([&](o3d_image_t** o) { return o3d_visualizer_capture_screen_float_buffer(o, get(), 1); });
-    }
-    /// @brief float32 metres along the optical axis, 0 where nothing was drawn.
-    Image capture_depth_float_buffer() {
-        return Image::adopt([&](o3d_image_t** o) { return o3d_visualizer_capture_depth_float_buffer(o, get(), 1); });
-    }
+    // ---- editing (the captures, a frame drawn for each, are generated) ----
     /// @brief Editing: vertex indices of the first geometry added, in pick order.
     std::vector<int32_t> picked_points() const { return copy_out<int32_t>(&o3d_visualizer_get_picked_points); }
     /// @brief Editing: a copy of the last crop (key C) when it was of a point cloud, else nothing.

@@ -18,7 +18,7 @@ use o3d_sys as sys;
 
 use crate::camera::{PinholeCameraParameters, PinholeIntrinsic};
 use crate::error::{check, Result};
-use crate::image::{new_image, Image};
+use crate::image::Image;
 use crate::io::{c_path, c_string};
 use crate::lineset::LineSet;
 use crate::pointcloud::PointCloud;
@@ -130,14 +130,6 @@ impl OffscreenRenderer {
         new_renderer(|out| unsafe { sys::o3d_offscreen_renderer_create(out, width, height, backend.raw()) })
     }
 
-    /// The backend it runs on (`Egl` or `Glfw`, never `Auto`).
-    pub fn backend(&self) -> Result<RenderBackend> {
-        let mut out = 0;
-        // SAFETY: valid handle and out-pointer.
-        check(unsafe { sys::o3d_offscreen_renderer_get_backend(&mut out, self.as_raw()) })?;
-        RenderBackend::from_raw(out)
-    }
-
     /// (width, height) in pixels.
     pub fn size(&self) -> Result<(i32, i32)> {
         let (mut w, mut h) = (0, 0);
@@ -187,23 +179,6 @@ impl OffscreenRenderer {
             sys::o3d_offscreen_renderer_get_camera(&mut k, extrinsic.as_mut_ptr().cast(), self.raw_mut())
         })?;
         Ok(PinholeCameraParameters { intrinsic: PinholeIntrinsic::from_raw(k), extrinsic })
-    }
-
-    /// render_to_image: RGB, one `u8` a channel.
-    pub fn render_to_image(&mut self) -> Result<Image> {
-        let raw = self.raw_mut();
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe { sys::o3d_offscreen_renderer_render_to_image(out, raw) })
-    }
-
-    /// render_to_depth_image: one `f32` channel. `z_in_view_space`: the distance along the camera's
-    /// axis (0 where nothing was drawn); else the depth buffer in `[0, 1]` (1 where nothing was drawn).
-    pub fn render_to_depth_image(&mut self, z_in_view_space: bool) -> Result<Image> {
-        let raw = self.raw_mut();
-        // SAFETY: valid handle and out-pointer.
-        new_image(|out| unsafe {
-            sys::o3d_offscreen_renderer_render_to_depth_image(out, raw, i32::from(z_in_view_space))
-        })
     }
 }
 

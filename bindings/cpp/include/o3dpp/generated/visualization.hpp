@@ -9,6 +9,7 @@
 #include "o3d/o3d.h"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/enums.hpp"
+#include "o3dpp/image.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
@@ -18,6 +19,12 @@ namespace detail {
 template <typename Self>
 class OffscreenRendererCalls {
 public:
+    /// @brief The backend the renderer runs on (O3D_RENDER_BACKEND_EGL or _GLFW).
+    RenderBackend backend() const {
+        int32_t out = 0;
+        check(o3d_offscreen_renderer_get_backend(&out, self().get()));
+        return static_cast<RenderBackend>(out);
+    }
     /// @brief Whether a geometry named `name` is in the scene (scene.has_geometry).
     bool has(const std::string& name) {
         int32_t out = 0;
@@ -39,6 +46,18 @@ public:
     /// @brief A perspective camera at `eye` looking at `center` with `up` up and a vertical field of view (setup_camera(vertical_field_of_view, center, eye, up)).
     Self& setup_camera(double vertical_fov_deg, const Vec3& center, const Vec3& eye, const Vec3& up) {
         return self().done(o3d_offscreen_renderer_setup_camera_fov(self().get(), vertical_fov_deg, center.data(), eye.data(), up.data()));
+    }
+    /// @brief Render the scene to a new RGB image (3 channels, 1 byte each; render_to_image).
+    Image render_to_image() {
+        return Image::adopt([&](auto** out) { return o3d_offscreen_renderer_render_to_image(out, self().get()); });
+    }
+    /// @brief Render the scene's depth to a new float image (1 channel, 4 bytes; render_to_depth_image).
+    Image render_to_depth_image(bool z_in_view_space = false) {
+        return Image::adopt([&](auto** out) { return o3d_offscreen_renderer_render_to_depth_image(out, self().get(), z_in_view_space ? 1 : 0); });
+    }
+    /// @brief Render the scene and write it as a PNG file in one call.
+    Self& render_to_png(const std::string& path) {
+        return self().done(o3d_offscreen_renderer_render_to_png(self().get(), path.c_str()));
     }
 
 private:

@@ -94,9 +94,17 @@ public:
     Self& send_scroll(double dx, double dy) {
         return self().ran(o3d_visualizer_send_scroll(self().get(), dx, dy));
     }
+    /// @brief Visualizer.capture_screen_float_buffer: the frame as RGB float32 in [0, 1].
+    Image capture_screen_float_buffer() {
+        return Image::adopt([&](auto** out) { return o3d_visualizer_capture_screen_float_buffer(out, self().get(), 1); });
+    }
     /// @brief Visualizer.capture_screen_image: the frame as an 8-bit RGB image file (PNG or JPEG by extension).
     Self& capture_screen_image(const std::string& path) {
         return self().ran(o3d_visualizer_capture_screen_image(self().get(), path.c_str(), 1));
+    }
+    /// @brief Visualizer.capture_depth_float_buffer: float32 depth in metres along the optical axis, 0 where nothing was drawn.
+    Image capture_depth_float_buffer() {
+        return Image::adopt([&](auto** out) { return o3d_visualizer_capture_depth_float_buffer(out, self().get(), 1); });
     }
     /// @brief Visualizer.capture_depth_image: depth * `depth_scale` as a 16-bit PNG (Open3D's default scale 1000: millimetres), clamped to 65535.
     Self& capture_depth_image(const std::string& path, double depth_scale = 1000.0) {

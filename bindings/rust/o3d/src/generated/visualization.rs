@@ -114,6 +114,12 @@ options! {
 }
 
 impl OffscreenRenderer {
+    /// The backend the renderer runs on (`O3D_RENDER_BACKEND_EGL` or _GLFW).
+    pub fn backend(&self) -> Result<RenderBackend> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_offscreen_renderer_get_backend(&mut out, self.as_raw()) }).and_then(|()| RenderBackend::from_raw(out))
+    }
     /// Whether a geometry named `name` is in the scene (scene.has_geometry).
     pub fn has_geometry(&mut self, name: &str) -> Result<bool> {
         let mut out = 0;
@@ -139,6 +145,16 @@ impl OffscreenRenderer {
     pub fn setup_camera_fov(&mut self, vertical_fov_deg: f64, center: [f64; 3], eye: [f64; 3], up: [f64; 3]) -> Result<()> {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_offscreen_renderer_setup_camera_fov(self.raw_mut(), vertical_fov_deg, center.as_ptr(), eye.as_ptr(), up.as_ptr()) })
+    }
+    /// Render the scene to a new RGB image (3 channels, 1 byte each; render_to_image).
+    pub fn render_to_image(&mut self) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_offscreen_renderer_render_to_image(out, self.raw_mut()) })
+    }
+    /// Render the scene's depth to a new float image (1 channel, 4 bytes; render_to_depth_image).
+    pub fn render_to_depth_image(&mut self, z_in_view_space: bool) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_offscreen_renderer_render_to_depth_image(out, self.raw_mut(), i32::from(z_in_view_space)) })
     }
     /// Render the scene and write it as a PNG file in one call.
     pub fn render_to_png(&mut self, path: impl AsRef<Path>) -> Result<()> {

@@ -234,6 +234,8 @@ CPP_METHODS = {
     **{f"o3d_pose_graph_{c}": (None, {}) for c in ("num_nodes", "num_edges", "add_node", "set_node", "clear")},
     "o3d_pose_graph_get_node": ("node", {}),
     **{f"o3d_feature_{c}": (None, {}) for c in ("dimension", "num", "resize")},
+    "o3d_rgbd_image_create_from_dataset_format": (None, {"convert_rgb_to_intensity": "true"}),
+    "o3d_rgbd_image_get_color": ("color", {}), "o3d_rgbd_image_get_depth": ("depth", {}),
 }
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
@@ -252,7 +254,8 @@ CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/v
                "o3d_tsdf_volume_t": ("TSDFVolume", "integration", "done", [
                    "o3dpp/pointcloud.hpp", "o3dpp/trianglemesh.hpp", "o3dpp/voxelgrid.hpp"]),
                "o3d_pose_graph_t": ("PoseGraph", "posegraph", "done", ["o3dpp/span.hpp"]),
-               "o3d_feature_t": ("Feature", "feature", "done", [])}
+               "o3d_feature_t": ("Feature", "feature", "done", []),
+               "o3d_rgbd_image_t": ("RgbdImage", "rgbd", "done", ["o3dpp/image.hpp"])}
 # C function -> Rust method name (None: the derived one).
 RUST_METHODS = {
     "o3d_visualizer_create_window": None, "o3d_visualizer_destroy_window": None, "o3d_visualizer_add_image": None,
@@ -263,6 +266,8 @@ RUST_METHODS = {
     "o3d_visualizer_capture_screen_float_buffer": None, "o3d_visualizer_capture_depth_float_buffer": None,
     "o3d_offscreen_renderer_get_backend": "backend", "o3d_offscreen_renderer_render_to_image": None,
     "o3d_offscreen_renderer_render_to_depth_image": None,
+    "o3d_rgbd_image_create_from_dataset_format": "from_dataset_format", "o3d_rgbd_image_get_color": "color",
+    "o3d_rgbd_image_get_depth": "depth",
     "o3d_visualizer_send_scroll": None, "o3d_visualizer_capture_screen_image": None,
     "o3d_visualizer_capture_depth_image": None, "o3d_visualizer_view_rotate": None,
     "o3d_visualizer_view_translate": None, "o3d_visualizer_view_scale": None,
@@ -320,7 +325,8 @@ RUST_ADOPT = {"o3d_pointcloud_t": "crate::pointcloud::new_cloud", "o3d_trianglem
               "o3d_image_t": "crate::image::new_image", "o3d_lineset_t": "crate::lineset::new_lineset",
               "o3d_voxelgrid_t": "crate::voxelgrid::new_grid",
               "o3d_selection_polygon_volume_t": "crate::selection::new_volume", "o3d_octree_t": "crate::octree::new_octree",
-              "o3d_tsdf_volume_t": "crate::integration::new_volume", "o3d_kdtree_t": "crate::kdtree::new_tree"}
+              "o3d_tsdf_volume_t": "crate::integration::new_volume", "o3d_kdtree_t": "crate::kdtree::new_tree",
+              "o3d_rgbd_image_t": "crate::rgbd::new_rgbd"}
 # handle -> (type, receiver, the handle as *mut, whether a method without a value returns &mut Self to chain).
 # The renderer's methods take &mut self: its C functions take a non-const handle (the viewer's take &self: its
 # callbacks call back into it, see src/visualizer.rs); the geometries' edits chain.
@@ -335,7 +341,8 @@ RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False)
                 "o3d_octree_t": ("Octree", "&mut self", "self.raw_mut()", True),
                 "o3d_kdtree_t": ("KDTreeFlann", "&self", "self.as_raw()", False),
                 "o3d_selection_polygon_volume_t": ("SelectionPolygonVolume", "&mut self", "self.raw_mut()", False),
-                "o3d_tsdf_volume_t": ("TSDFVolume", "&mut self", "self.raw_mut()", False)}
+                "o3d_tsdf_volume_t": ("TSDFVolume", "&mut self", "self.raw_mut()", False),
+                "o3d_rgbd_image_t": ("RgbdImage", "&mut self", "self.raw_mut()", False)}
 
 # Python: C function -> (Python class, name (None: the derived one), {C parameter: "keyword=default"}); a keyword
 # left out is the C name; a default is written in Python (True, None, 0.5, inf, (0.0, 0.0, 1.0)) or as a constant.

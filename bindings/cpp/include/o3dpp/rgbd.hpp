@@ -8,14 +8,17 @@
 #include "o3dpp/camera.hpp"
 #include "o3dpp/error.hpp"
 #include "o3dpp/generated/options.hpp"
+#include "o3dpp/generated/rgbd.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
 #include "o3dpp/pointcloud.hpp"
 
 namespace o3dpp {
 
-/// @brief A color (or intensity) image and a float depth image in metres. Move-only.
-class RgbdImage : public Owner<RgbdImage, o3d_rgbd_image_t, &o3d_rgbd_image_destroy> {
+/// @brief A color (or intensity) image and a float depth image in metres. Move-only. The dataset readers and the
+/// image copies are generated (detail::RgbdImageCalls).
+class RgbdImage : public Owner<RgbdImage, o3d_rgbd_image_t, &o3d_rgbd_image_destroy>,
+                  public detail::RgbdImageCalls<RgbdImage> {
 public:
     explicit RgbdImage(o3d_rgbd_image_t* owned) : Owner(owned) {}
 
@@ -25,17 +28,6 @@ public:
         const o3d_rgbd_options_t c = options.to_c();
         return create(&o3d_rgbd_image_create_from_color_and_depth, color.get(), depth.get(), &c);
     }
-    /// @brief create_from_{redwood,tum,sun,nyu}_format.
-    static RgbdImage create_from_dataset_format(RgbdFormat format, const Image& color, const Image& depth,
-                                                bool convert_rgb_to_intensity = true) {
-        return create(&o3d_rgbd_image_create_from_dataset_format, static_cast<int32_t>(format), color.get(),
-                      depth.get(), convert_rgb_to_intensity ? 1 : 0);
-    }
-
-    /// @brief Copy of the color (or intensity) image.
-    Image color() const { return derive<Image>(&o3d_rgbd_image_get_color); }
-    /// @brief Copy of the depth image (float metres).
-    Image depth() const { return derive<Image>(&o3d_rgbd_image_get_depth); }
 };
 
 /// @brief Back-project a depth image (uint16 raw or float metres) through `intrinsic`, then to world

@@ -7,7 +7,7 @@ use o3d_sys as sys;
 
 use crate::camera::PinholeIntrinsic;
 use crate::error::Result;
-use crate::image::{new_image, Image};
+use crate::image::Image;
 use crate::pointcloud::{new_cloud, PointCloud};
 use crate::util::{c_enum, handle, mat4_ptr, options};
 
@@ -26,37 +26,6 @@ impl RgbdImage {
         new_rgbd(|out| unsafe {
             sys::o3d_rgbd_image_create_from_color_and_depth(out, color.as_raw(), depth.as_raw(), &opts)
         })
-    }
-
-    /// One of the dataset readers of the Open3D paper (create_from_{redwood,tum,sun,nyu}_format).
-    pub fn from_dataset_format(
-        format: RgbdFormat,
-        color: &Image,
-        depth: &Image,
-        convert_rgb_to_intensity: bool,
-    ) -> Result<RgbdImage> {
-        // SAFETY: valid handles.
-        new_rgbd(|out| unsafe {
-            sys::o3d_rgbd_image_create_from_dataset_format(
-                out,
-                format.raw(),
-                color.as_raw(),
-                depth.as_raw(),
-                convert_rgb_to_intensity as i32,
-            )
-        })
-    }
-
-    /// A copy of the color (or intensity) image.
-    pub fn color(&self) -> Result<Image> {
-        // SAFETY: valid handle.
-        new_image(|out| unsafe { sys::o3d_rgbd_image_get_color(out, self.as_raw()) })
-    }
-
-    /// A copy of the depth image (1-channel f32, metres).
-    pub fn depth(&self) -> Result<Image> {
-        // SAFETY: valid handle.
-        new_image(|out| unsafe { sys::o3d_rgbd_image_get_depth(out, self.as_raw()) })
     }
 }
 

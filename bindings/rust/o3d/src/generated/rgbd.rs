@@ -44,3 +44,21 @@ options! {
         pub convert_rgb_to_intensity: bool = convert_rgb_to_intensity,
     }
 }
+
+impl RgbdImage {
+    /// The dataset readers of the Open3D paper: create_from_{redwood,tum,sun,nyu}_format.
+    pub fn from_dataset_format(format: RgbdFormat, color: &Image, depth: &Image, convert_rgb_to_intensity: bool) -> Result<RgbdImage> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::rgbd::new_rgbd(|out| unsafe { sys::o3d_rgbd_image_create_from_dataset_format(out, format.raw(), color.as_raw(), depth.as_raw(), i32::from(convert_rgb_to_intensity)) })
+    }
+    /// A copy of the color (or intensity) image.
+    pub fn color(&self) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_rgbd_image_get_color(out, self.as_raw()) })
+    }
+    /// A copy of the depth image (1-channel float32, metres).
+    pub fn depth(&self) -> Result<Image> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::image::new_image(|out| unsafe { sys::o3d_rgbd_image_get_depth(out, self.as_raw()) })
+    }
+}

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "o3d/geometry/mesh_adjacency.h"
+#include "o3d/geometry/mesh_compaction.h"
 #include "o3d/geometry/triangle_mesh_basics.h"
 #include "o3d/geometry/triangle_mesh_ops.h"
 #include "o3d/utility/error.h"
@@ -49,39 +50,6 @@ std::vector<int> first_equal(size_t n, Hash hash, Equal equal) {
         first[i] = slots[s];
     }
     return first;
-}
-
-template <typename T>
-void compact(std::vector<T>& values, const std::vector<uint8_t>& keep, size_t rows_per_item = 1) {
-    if (values.size() != keep.size() * rows_per_item) return;
-    size_t k = 0;
-    for (size_t i = 0; i < keep.size(); ++i) {
-        if (!keep[i]) continue;
-        for (size_t r = 0; r < rows_per_item; ++r) values[k * rows_per_item + r] = values[i * rows_per_item + r];
-        ++k;
-    }
-    values.resize(k * rows_per_item);
-}
-
-/// @brief Keep the triangles flagged in `keep`, with their normals, UVs and material ids.
-void keep_triangles(TriangleMesh& mesh, const std::vector<uint8_t>& keep) {
-    const bool normals = mesh.has_triangle_normals(), uvs = mesh.has_triangle_uvs(),
-               ids = mesh.has_triangle_material_ids();
-    if (normals) compact(mesh.triangle_normals, keep);
-    if (uvs) compact(mesh.triangle_uvs, keep, 3);
-    if (ids) compact(mesh.triangle_material_ids, keep);
-    compact(mesh.triangles, keep);
-}
-
-/// @brief Keep the vertices flagged in `keep` (with normals and colors) and renumber the triangles through
-/// `new_index` (old vertex -> new vertex, valid for every vertex a triangle uses).
-void keep_vertices(TriangleMesh& mesh, const std::vector<uint8_t>& keep, const std::vector<int>& new_index) {
-    const bool normals = mesh.has_vertex_normals(), colors = mesh.has_vertex_colors();
-    if (normals) compact(mesh.vertex_normals, keep);
-    if (colors) compact(mesh.vertex_colors, keep);
-    compact(mesh.vertices, keep);
-    for (Eigen::Vector3i& tri : mesh.triangles)
-        for (int k = 0; k < 3; ++k) tri(k) = new_index[tri(k)];
 }
 
 /// @brief Renumbering for keeping the first vertex of each class `representative[v]` (<= v).

@@ -4,63 +4,12 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
-extern "C" {
-#include <libqhull_r/qhull_ra.h>
-}
-
+#include "o3d/geometry/qhull_support.h"
 #include "o3d/utility/error.h"
 
 namespace o3d::geometry {
-namespace {
-
-/// @brief Qhull's error stream captured in memory, so that its diagnostics become our message
-/// instead of noise on the caller's stderr.
-class MemoryStream {
-public:
-    MemoryStream() : file_(open_memstream(&buffer_, &size_)) {}
-    ~MemoryStream() {
-        if (file_) std::fclose(file_);
-        std::free(buffer_);
-    }
-    MemoryStream(const MemoryStream&) = delete;
-    MemoryStream& operator=(const MemoryStream&) = delete;
-    FILE* file() const { return file_; }
-    std::string text() {
-        if (!file_) return {};
-        std::fflush(file_);
-        std::string s(buffer_ ? buffer_ : "", size_);
-        // Qhull's first paragraph names the problem; the rest is option dumps.
-        const size_t cut = s.find("\n\n");
-        return cut == std::string::npos ? s : s.substr(0, cut);
-    }
-
-private:
-    char* buffer_ = nullptr;
-    size_t size_ = 0;
-    FILE* file_;
-};
-
-/// @brief Owns one reentrant Qhull run and frees it on every path.
-class QhullRun {
-public:
-    QhullRun() { qh_zero(&qh_, nullptr); }
-    ~QhullRun() {
-        qh_freeqhull(&qh_, !qh_ALL);
-        int curlong = 0, totlong = 0;
-        qh_memfreeshort(&qh_, &curlong, &totlong);
-    }
-    QhullRun(const QhullRun&) = delete;
-    QhullRun& operator=(const QhullRun&) = delete;
-    qhT* get() { return &qh_; }
-
-private:
-    qhT qh_;
-};
-
-}  // namespace
 
 ConvexHull compute_convex_hull(const std::vector<Eigen::Vector3d>& points, bool joggle_inputs) {
     if (points.size() < 4)
@@ -73,15 +22,15 @@ ConvexHull compute_convex_hull(const std::vector<Eigen::Vector3d>& points, bool 
     static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(coordT), "Vector3d must be 3 packed doubles");
     coordT* coords = const_cast<coordT*>(points[0].data());  // Qhull copies before joggling (ismalloc False)
 
-    QhullRun run;
+    detail::QhullRun run;
     qhT* qh = run.get();
-    MemoryStream errors;
+    detail::QhullErrorStream errors;
     char flags[32];
     std::snprintf(flags, sizeof flags, "qhull Qt%s", joggle_inputs ? " QJ" : "");
     const int exit_code = qh_new_qhull(qh, 3, static_cast<int>(points.size()), coords, False, flags, nullptr,
                                        errors.file());
     if (exit_code != 0) {
-        const std::string reason = errors.text();
+        const std::string reason = errors.first_paragraph();
         throw InvalidArgument("Qhull could not build the hull (exit code " + std::to_string(exit_code) + ")" +
                               (joggle_inputs ? "" : "; the points may be coplanar (try joggle_inputs)") +
                               (reason.empty() ? "" : ": " + reason));

@@ -36,7 +36,7 @@ CLASS_NAMES = {  # C type -> class name (default: CamelCase of the noun)
     "o3d_lineset_t": "LineSet", "o3d_voxelgrid_t": "VoxelGrid", "o3d_rgbd_image_t": "RGBDImage", "o3d_tsdf_volume_t": "TSDFVolume",
     "o3d_obb_t": "OrientedBoundingBox", "o3d_pinhole_intrinsic_t": "PinholeCameraIntrinsic",
     "o3d_camera_trajectory_t": "PinholeCameraTrajectory", "o3d_icp_options_t": "IcpOptions",
-    "o3d_fgr_options_t": "FgrOptions", "o3d_rgbd_options_t": "RgbdOptions",
+    "o3d_fgr_options_t": "FgrOptions", "o3d_rgbd_options_t": "RgbdOptions", "o3d_tetramesh_t": "TetraMesh",
 }
 # Callbacks are hand-written (o3d.i). Views (`T** out_data` + row counts) become o3dx_view results: a
 # borrowed address, rows and bytes (C#: struct View; Java: a direct ByteBuffer), valid until the owner changes.
@@ -65,6 +65,8 @@ CAPACITY = {
     "o3d_pointcloud_compute_mahalanobis_distance": PC_SIZE.format("pc"),
     "o3d_pointcloud_compute_convex_hull": PC_SIZE.format("pc"),
     "o3d_pointcloud_hidden_point_removal": PC_SIZE.format("pc"),
+    "o3d_pointcloud_compute_iss_keypoints": PC_SIZE.format("pc"),
+    "o3d_tetramesh_create_from_point_cloud": PC_SIZE.format("pc"),
     "o3d_registration_result_get_correspondence_set": "query",
     "o3d_trianglemesh_cluster_connected_triangles": "o3dx_count(o3d_trianglemesh_num_triangles, mesh)",
     "o3d_trianglemesh_compute_convex_hull": "o3dx_count(o3d_trianglemesh_num_vertices, mesh)",

@@ -19,6 +19,7 @@
 #include "o3d/geometry/octree.h"
 #include "o3d/geometry/point_cloud.h"
 #include "o3d/geometry/rgbd_image.h"
+#include "o3d/geometry/tetra_mesh.h"
 #include "o3d/geometry/triangle_mesh.h"
 #include "o3d/geometry/voxel_grid.h"
 #include "o3d/kdtree/kd_tree.h"
@@ -32,6 +33,10 @@ struct o3d_pointcloud {
 
 struct o3d_trianglemesh {
     o3d::geometry::TriangleMesh mesh;
+};
+
+struct o3d_tetramesh {
+    o3d::geometry::TetraMesh mesh;
 };
 
 struct o3d_image {

@@ -196,6 +196,25 @@ O3D_API int32_t o3d_get_num_threads(void);
  */
 typedef int32_t (*o3d_progress_callback)(double fraction, void* user_data);
 
+/** How a long call without tunables of its own runs: threads, progress and cancel. */
+typedef struct o3d_progress_options {
+    uint32_t struct_size;           /**< sizeof(o3d_progress_options_t) */
+    o3d_count num_threads;          /**< 0 = library default; the result does not depend on it */
+    o3d_progress_callback progress; /**< fraction of the work done; may be NULL */
+    void* user_data;                /**< passed to `progress` */
+} o3d_progress_options_t;
+
+/**
+ * @brief Fill defaults (library thread count, no callback).
+ *
+ * Threads: any thread.
+ * @param opts the struct to fill
+ * @param struct_size sizeof the struct as the caller knows it (an older, smaller size is accepted)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know;
+ *   O3D_ERROR_CANCELLED when the progress callback returns non-zero.
+ */
+O3D_API o3d_status o3d_progress_options_init(o3d_progress_options_t* opts, uint32_t struct_size);
+
 /** Owned byte buffer (in-memory file contents). */
 typedef struct o3d_buffer o3d_buffer_t;
 /**

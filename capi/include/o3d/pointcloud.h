@@ -694,6 +694,76 @@ O3D_API o3d_status o3d_pointcloud_create_from_rgbd_image(o3d_pointcloud_t** out,
                                                          int32_t project_valid_depth_only);
 
 
+/* ---- Normal orientation, duplicates and keypoints ---- */
+
+/**
+ * @brief Orient the normals consistently (Hoppe et al. 1992): a Riemannian graph of the points (the Euclidean
+ * minimum spanning tree and the `k` nearest neighbours), weighted by how far neighbouring tangent planes disagree,
+ * and a traversal of its minimum spanning tree that flips each normal to agree with its parent's.
+ * @see PointCloud.orient_normals_consistent_tangent_plane
+ *
+ * Threads: needs exclusive access to `pc`.
+ * @param pc the point cloud, with normals
+ * @param k neighbours per point in the graph (>= 1)
+ * @param lambda weight of the edge-direction penalty (Open3D 0.18's `lambda`; 0: Hoppe's weights only), finite, >= 0
+ * @param cos_alpha_tol graph edges whose normals' |cos| is below this are dropped (1: keep all), in [-1, 1]
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a cloud without normals, a non-finite point or
+ *   an argument out of range.
+ */
+O3D_API o3d_status o3d_pointcloud_orient_normals_consistent_tangent_plane(o3d_pointcloud_t* pc, o3d_count k,
+                                                                         double lambda, double cos_alpha_tol);
+/**
+ * @brief Remove points equal to an earlier point (coordinate for coordinate); their normals, colors and
+ * covariances go with them. @see PointCloud.remove_duplicated_points
+ *
+ * Threads: needs exclusive access to `pc`.
+ * @param pc the point cloud
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_pointcloud_remove_duplicated_points(o3d_pointcloud_t* pc);
+
+/** o3d.geometry.keypoint.compute_iss_keypoints keyword arguments. */
+typedef struct o3d_iss_options {
+    uint32_t struct_size;  /**< sizeof(o3d_iss_options_t) */
+    double salient_radius; /**< neighbourhood radius of the scatter matrix, >= 0; 0 (default): 6x the cloud resolution */
+    double non_max_radius; /**< radius of the non-maximum suppression, >= 0; 0 (default): 4x the cloud resolution */
+    double gamma_21;       /**< upper bound on lambda2 / lambda1, in (0, 1]; default 0.975 */
+    double gamma_32;       /**< upper bound on lambda3 / lambda2, in (0, 1]; default 0.975 */
+    o3d_count min_neighbors; /**< fewer neighbours than this: not a keypoint; default 5 */
+    o3d_count num_threads; /**< 0 = library default; the result does not depend on it */
+} o3d_iss_options_t;
+
+/**
+ * @brief Fill defaults (Open3D's).
+ *
+ * Threads: any thread.
+ * @param opts the struct to fill
+ * @param struct_size sizeof the struct as the caller knows it (an older, smaller size is accepted)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know.
+ */
+O3D_API o3d_status o3d_iss_options_init(o3d_iss_options_t* opts, uint32_t struct_size);
+/**
+ * @brief Intrinsic Shape Signature keypoints (Zhong 2009): points whose neighbourhood scatter has three distinct
+ * eigenvalues and the largest smallest eigenvalue within `non_max_radius`. @see keypoint.compute_iss_keypoints
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure): the keypoints, with their normals and colors
+ * @param out_indices receives the keypoints' indices in `pc`, ascending (`capacity` values, at most the point
+ *   count; NULL skips them)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param pc the point cloud
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad `opts->struct_size`, a non-finite point
+ *   or an option out of range; O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported;
+ *   `*out` is left NULL).
+ */
+O3D_API o3d_status o3d_pointcloud_compute_iss_keypoints(o3d_pointcloud_t** out, int32_t* out_indices,
+                                                        size_t capacity, size_t* out_n, const o3d_pointcloud_t* pc,
+                                                        const o3d_iss_options_t* opts);
+
+
 O3D_END_DECL
 
 #endif /* O3D_POINTCLOUD_H */

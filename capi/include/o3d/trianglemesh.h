@@ -461,6 +461,58 @@ O3D_API o3d_status o3d_trianglemesh_remove_non_manifold_edges(o3d_trianglemesh_t
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
 O3D_API o3d_status o3d_trianglemesh_merge_close_vertices(o3d_trianglemesh_t* mesh, double eps);
+/**
+ * @brief Remove the vertices at `indices` (repeats allowed) and every triangle that uses one of them; what stays
+ * keeps its order and attributes. @see TriangleMesh.remove_vertices_by_index
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param indices vertex indices
+ * @param num_indices number of indices
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an index out of range or a triangle index out of
+ *   range (the mesh is then unchanged).
+ */
+O3D_API o3d_status o3d_trianglemesh_remove_vertices_by_index(o3d_trianglemesh_t* mesh, const int32_t* indices,
+                                                             size_t num_indices);
+/**
+ * @brief Remove the vertices whose mask entry is non-zero and every triangle that uses one of them (the trim of a
+ * Poisson surface by its densities). @see TriangleMesh.remove_vertices_by_mask
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param mask one byte per vertex
+ * @param num_mask number of bytes in `mask` (the vertex count)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a mask of another size or a triangle index out of
+ *   range (the mesh is then unchanged).
+ */
+O3D_API o3d_status o3d_trianglemesh_remove_vertices_by_mask(o3d_trianglemesh_t* mesh, const uint8_t* mask,
+                                                            size_t num_mask);
+/**
+ * @brief Remove the triangles at `indices` (repeats allowed); every vertex stays.
+ * @see TriangleMesh.remove_triangles_by_index
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param indices triangle indices
+ * @param num_indices number of indices
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or an index out of range (the mesh is then
+ *   unchanged).
+ */
+O3D_API o3d_status o3d_trianglemesh_remove_triangles_by_index(o3d_trianglemesh_t* mesh, const int32_t* indices,
+                                                              size_t num_indices);
+/**
+ * @brief Remove the triangles whose mask entry is non-zero; every vertex stays.
+ * @see TriangleMesh.remove_triangles_by_mask
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param mesh the mesh
+ * @param mask one byte per triangle
+ * @param num_mask number of bytes in `mask` (the triangle count)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a mask of another size (the mesh is then
+ *   unchanged).
+ */
+O3D_API o3d_status o3d_trianglemesh_remove_triangles_by_mask(o3d_trianglemesh_t* mesh, const uint8_t* mask,
+                                                             size_t num_mask);
 
 /* ---- Queries ---- */
 
@@ -934,6 +986,97 @@ O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_box(o3d_obb_t* out, co
  */
 O3D_API o3d_status o3d_trianglemesh_crop_obb(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
                                              const o3d_obb_t* obb);
+
+
+/* ---- Surface reconstruction from point clouds ---- */
+
+/** TriangleMesh.create_from_point_cloud_poisson keyword arguments, plus progress. */
+typedef struct o3d_poisson_options {
+    uint32_t struct_size;           /**< sizeof(o3d_poisson_options_t) */
+    o3d_count depth;                /**< maximum octree depth, in [1, 16]; default 8 */
+    double width;                   /**< > 0: the finest cells' width, which then sets the depth; default 0 (use depth) */
+    double scale;                   /**< ratio of the reconstruction cube to the samples' bounding cube, > 0; default 1.1 */
+    o3d_bool linear_fit;            /**< 1: iso-vertices by linear interpolation; default 0 */
+    o3d_count num_threads;          /**< 0 = library default (Open3D's n_threads=-1); the result does not depend on it */
+    o3d_progress_callback progress; /**< fraction of the work done; may be NULL */
+    void* user_data;                /**< passed to `progress` */
+} o3d_poisson_options_t;
+
+/**
+ * @brief Fill defaults (Open3D's).
+ *
+ * Threads: any thread.
+ * @param opts the struct to fill
+ * @param struct_size sizeof the struct as the caller knows it (an older, smaller size is accepted)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know;
+ *   O3D_ERROR_CANCELLED when the progress callback returns non-zero.
+ */
+O3D_API o3d_status o3d_poisson_options_init(o3d_poisson_options_t* opts, uint32_t struct_size);
+/**
+ * @brief Screened Poisson surface reconstruction (Kazhdan & Hoppe 2013) of an oriented cloud, on an adaptive
+ * octree: a watertight mesh, and per vertex the sampling density there as an octree depth (Open3D's densities:
+ * trim with `densities < quantile`). Colors are carried when the cloud has them.
+ * @see TriangleMesh.create_from_point_cloud_poisson
+ *
+ * Threads: any thread; `pc` is only read; the progress callback runs on the calling thread.
+ * Ownership: `*out_mesh` and `*out_densities` are the caller's, to free with o3d_trianglemesh_destroy() and
+ * o3d_feature_destroy(); both left NULL on failure.
+ * @param out_mesh receives the new handle (NULL on failure)
+ * @param out_densities receives the densities as a feature of dimension 1, one value per mesh vertex
+ * @param pc the point cloud, with normals
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad `opts->struct_size`, an empty cloud, a
+ *   cloud without normals, a non-finite point or normal, or an option out of range; O3D_ERROR_CANCELLED when the
+ *   progress callback returns non-zero.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_poisson(o3d_trianglemesh_t** out_mesh,
+                                                                   o3d_feature_t** out_densities,
+                                                                   const o3d_pointcloud_t* pc,
+                                                                   const o3d_poisson_options_t* opts);
+/**
+ * @brief Ball pivoting (Bernardini et al. 1999): a ball of each radius in turn, in increasing order, pivots about
+ * the front's edges; the mesh's vertices are the cloud's points (with their normals and colors), its triangles
+ * wound to agree with the normals. @see TriangleMesh.create_from_point_cloud_ball_pivoting
+ *
+ * Threads: any thread; `pc` is only read; the progress callback runs on the calling thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud, with normals
+ * @param radii the ball radii, each finite and > 0
+ * @param num_radii number of radii (>= 1)
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad `opts->struct_size`, an empty cloud, a
+ *   cloud without normals, a non-finite point, no radius or a bad one; O3D_ERROR_CANCELLED when the progress
+ *   callback returns non-zero.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_ball_pivoting(o3d_trianglemesh_t** out,
+                                                                         const o3d_pointcloud_t* pc,
+                                                                         const double* radii, size_t num_radii,
+                                                                         const o3d_progress_options_t* opts);
+/**
+ * @brief The alpha shape (Edelsbrunner & Muecke 1994): the boundary of the Delaunay tetrahedra whose circumradius
+ * is below `alpha`, wound outwards. @see TriangleMesh.create_from_point_cloud_alpha_shape
+ *
+ * Threads: any thread; the inputs are only read; the progress callback runs on the calling thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud
+ * @param alpha the alpha radius (finite, > 0)
+ * @param tetramesh the Delaunay tetrahedralization of `pc` from o3d_tetramesh_create_from_point_cloud, reused
+ *   (NULL: computed here)
+ * @param point_map that call's point map (ignored when `tetramesh` is NULL)
+ * @param num_point_map number of values in `point_map` (the tetra mesh's vertex count)
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad `opts->struct_size`, fewer than 4
+ *   points, a non-finite point, a flat (coplanar) cloud, a bad `alpha`, or a point map that does not fit;
+ *   O3D_ERROR_CANCELLED when the progress callback returns non-zero.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_alpha_shape(o3d_trianglemesh_t** out,
+                                                                       const o3d_pointcloud_t* pc, double alpha,
+                                                                       const o3d_tetramesh_t* tetramesh,
+                                                                       const int32_t* point_map,
+                                                                       size_t num_point_map,
+                                                                       const o3d_progress_options_t* opts);
 
 O3D_END_DECL
 

@@ -27,6 +27,7 @@ typedef struct o3d_registration_result o3d_registration_result_t; /**< opaque ha
 typedef struct o3d_rgbd_image o3d_rgbd_image_t; /**< opaque handle */
 typedef struct o3d_search_result o3d_search_result_t; /**< opaque handle */
 typedef struct o3d_selection_polygon_volume o3d_selection_polygon_volume_t; /**< opaque handle */
+typedef struct o3d_tetramesh o3d_tetramesh_t; /**< opaque handle */
 typedef struct o3d_trianglemesh o3d_trianglemesh_t; /**< opaque handle */
 typedef struct o3d_tsdf_volume o3d_tsdf_volume_t; /**< opaque handle */
 typedef struct o3d_visualizer o3d_visualizer_t; /**< opaque handle */

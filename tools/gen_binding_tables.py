@@ -64,7 +64,7 @@ VARIANTS = {  # every language
     "O3D_COLOR_OPTION_Y": "YCoordinate", "O3D_COLOR_OPTION_Z": "ZCoordinate", "O3D_KERNEL_GM": "GM",
 }
 CPP_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_robust_kernel": "RobustKernelType",
-             "o3d_tsdf_volume_color_type": "TSDFVolumeColorType"}
+             "o3d_tsdf_volume_color_type": "TSDFVolumeColorType", "o3d_tetramesh_array": "TetraMeshArray"}
 CPP_VARIANTS = {"O3D_VOXELGRID_GRID_INDEX": "GridIndices", "O3D_TSDF_VOLUME_COLOR_TYPE_RGB8": "RGB8"}
 # C++ structs written by hand on the generated detail::<Name>Base (extra constructors, methods).
 CPP_EXTENDED = {"o3d_search_param_t", "o3d_pose_graph_edge_t", "o3d_render_option_t", "o3d_render_material_t"}
@@ -79,12 +79,13 @@ RUST_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_image_convert": "Conv
 # points()/colors()/...; create_mobius edits the raw struct.
 RUST_SKIP = {"o3d_search_kind", "o3d_robust_kernel", "o3d_correspondence_checker_kind", "o3d_pointcloud_array",
              "o3d_lineset_array", "o3d_feature_array", "o3d_image_array", "o3d_voxelgrid_array",
-             "o3d_search_param_t", "o3d_mobius_options_t"}
+             "o3d_search_param_t", "o3d_mobius_options_t", "o3d_tetramesh_array"}
 RUST_MODULES = {  # default: the header's name (common.h -> lib)
     "o3d_mesh_read_options_t": "io_geometry", "o3d_mesh_write_options_t": "io_geometry",
     "o3d_depth_to_cloud_options_t": "rgbd", "o3d_ransac_options_t": "registration_global",
     "o3d_fgr_options_t": "registration_global", "o3d_simplification_contraction": "trianglemesh_ops",
     "o3d_filter_scope": "trianglemesh_ops", "o3d_trianglemesh_t": "trianglemesh_ops",
+    "o3d_iss_options_t": "keypoint", "o3d_poisson_options_t": "surface_reconstruction",
 }
 RUST_SUBSETS = {"o3d_mesh_array": (("O3D_MESH_VERTICES", "O3D_MESH_VERTEX_NORMALS", "O3D_MESH_VERTEX_COLORS",
                                     "O3D_MESH_TRIANGLE_NORMALS"), "the float64 ones with three values per row")}
@@ -175,6 +176,9 @@ CPP_METHODS = {
     "o3d_pointcloud_random_down_sample": (None, {"seed": "0"}),
     "o3d_pointcloud_farthest_point_down_sample": (None, {"start_index": "0"}),
     "o3d_pointcloud_crop_aabb": (None, {"invert": "false"}),
+    "o3d_pointcloud_orient_normals_consistent_tangent_plane": (None, {"lambda": "0.0", "cos_alpha_tol": "1.0"}),
+    "o3d_pointcloud_remove_duplicated_points": (None, {}),
+    **{f"o3d_tetramesh_{c}": (None, {}) for c in ("num_vertices", "num_tetras")},
     **{f"o3d_trianglemesh_{c}": (None, {}) for c in (
         "num_vertices", "num_triangles", "texture_count", "add_texture", "clear_textures", "normalize_normals",
         "remove_duplicated_vertices", "remove_duplicated_triangles", "remove_degenerate_triangles",
@@ -246,6 +250,7 @@ CPP_CLASSES = {"o3d_visualizer_t": ("Visualizer", "visualizer", "ran", ["o3dpp/v
                "o3d_trianglemesh_t": ("TriangleMesh", "trianglemesh", "done", [
                    "<limits>", "o3dpp/image.hpp", "o3dpp/pointcloud.hpp", "o3dpp/span.hpp"]),
                "o3d_lineset_t": ("LineSet", "lineset", "done", ["o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
+               "o3d_tetramesh_t": ("TetraMesh", "tetramesh", "done", []),
                "o3d_image_t": ("Image", "image", "done", []),
                "o3d_voxelgrid_t": ("VoxelGrid", "voxelgrid", "done", [
                    "o3dpp/pointcloud.hpp", "o3dpp/span.hpp", "o3dpp/trianglemesh.hpp"]),
@@ -295,6 +300,8 @@ RUST_METHODS = {
         "translate", "paint_uniform_color", "remove_non_finite_points", "normalize_normals", "voxel_down_sample",
         "uniform_down_sample", "random_down_sample", "farthest_point_down_sample", "crop_aabb")},
     "o3d_pointcloud_size": "try_len",
+    "o3d_pointcloud_orient_normals_consistent_tangent_plane": None, "o3d_pointcloud_remove_duplicated_points": None,
+    "o3d_tetramesh_num_vertices": None, "o3d_tetramesh_num_tetras": None,
     **{f"o3d_lineset_{n}": None for n in (
         "num_points", "num_lines", "paint_uniform_color", "transform", "create_from_axis_aligned_bounding_box",
         "create_from_triangle_mesh")},
@@ -317,7 +324,7 @@ RUST_METHODS = {
     **{f"o3d_tsdf_volume_get_{c}": c for c in TSDF_PROPERTIES},
 }
 # int32_t parameters Rust takes as usize (counts of iterations, segments), converted by crate::util::to_i32: a value
-# over i32::MAX is an InvalidArgument error naming the parameter.
+# over i32::MAX is an InvalidArgument error naming the parameter. (Parameters typed o3d_count need no entry.)
 RUST_USIZE = {"number_of_iterations", "resolution", "split", "radial_resolution", "tubular_resolution",
               "cylinder_split", "cone_split", "max_depth", "volume_unit_resolution", "depth_sampling_stride"}
 # A handle -> the crate function that owns a new one a C call wrote (made by `handle!`).
@@ -335,6 +342,7 @@ RUST_CLASSES = {"o3d_visualizer_t": ("Visualizer", "&self", "self.raw()", False)
                 "o3d_trianglemesh_t": ("TriangleMesh", "&mut self", "self.raw_mut()", True),
                 "o3d_pointcloud_t": ("PointCloud", "&mut self", "self.raw_mut()", True),
                 "o3d_lineset_t": ("LineSet", "&mut self", "self.raw_mut()", True),
+                "o3d_tetramesh_t": ("TetraMesh", "&mut self", "self.raw_mut()", True),
                 "o3d_image_t": ("Image", "&mut self", "self.raw_mut()", True),
                 "o3d_voxelgrid_t": ("VoxelGrid", "&self", "self.as_raw()", False),
                 "o3d_camera_trajectory_t": ("CameraTrajectory", "&mut self", "self.raw_mut()", True),
@@ -369,6 +377,9 @@ PY_METHODS = {
     "o3d_pointcloud_orient_normals_to_align_with_direction": ("PointCloud", None,
                                                               {"direction": "orientation_reference=(0.0, 0.0, 1.0)"}),
     "o3d_pointcloud_orient_normals_towards_camera_location": ("PointCloud", None, {"camera_location": "=(0.0, 0.0, 0.0)"}),
+    "o3d_pointcloud_orient_normals_consistent_tangent_plane": ("PointCloud", None, {"lambda": "lambda_penalty=0.0",
+                                                                               "cos_alpha_tol": "=1.0"}),
+    "o3d_pointcloud_remove_duplicated_points": ("PointCloud", None, {}),
     "o3d_trianglemesh_clear": ("TriangleMesh", None, {}),
     "o3d_trianglemesh_compute_vertex_normals": ("TriangleMesh", None, PY_NORMALS),
     "o3d_trianglemesh_compute_triangle_normals": ("TriangleMesh", None, PY_NORMALS),
@@ -467,13 +478,15 @@ PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangl
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
 # changing methods that return None in Open3D.
 PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",
+               "o3d_pointcloud_remove_duplicated_points",
                "o3d_trianglemesh_clear", "o3d_trianglemesh_compute_vertex_normals",
                "o3d_trianglemesh_compute_triangle_normals", "o3d_trianglemesh_paint_uniform_color",
                "o3d_trianglemesh_remove_duplicated_vertices", "o3d_trianglemesh_remove_duplicated_triangles",
                "o3d_trianglemesh_remove_degenerate_triangles", "o3d_trianglemesh_remove_unreferenced_vertices",
                "o3d_trianglemesh_remove_non_manifold_edges", "o3d_trianglemesh_merge_close_vertices",
                "o3d_lineset_paint_uniform_color"}
-PY_VOID = {"o3d_pointcloud_orient_normals_to_align_with_direction", "o3d_pointcloud_orient_normals_towards_camera_location"}
+PY_VOID = {"o3d_pointcloud_orient_normals_to_align_with_direction", "o3d_pointcloud_orient_normals_towards_camera_location",
+           "o3d_pointcloud_orient_normals_consistent_tangent_plane"}
 
 
 def camel(snake):
@@ -1110,17 +1123,22 @@ def rust_param(p, groups):
         return f"[f64; {p['array']}]", f"{n}.as_ptr()"
     if k == "optional_array":
         return f"Option<[f64; {p['array']}]>", f"crate::util::opt_ptr(&{n})"
-    if k == "int32_t" and n in RUST_USIZE:  # converted before the call (rust_conversions)
+    if rust_usize(p):  # converted before the call (rust_conversions)
         return "usize", n
     return {"int32_t": ("i32", n), "double": ("f64", n), "bool": ("bool", f"i32::from({n})"), "size": ("usize", n),
             "seed": ("u64", n), "string": ("&str", f'c_string("{n}", {n})?.as_ptr()'),
             "path": ("impl AsRef<Path>", f"c_path({n}.as_ref())?.as_ptr()"), "fixed": (None, binding_methods.FIXED.get(n))}[k]
 
 
+def rust_usize(p):
+    """An int32_t parameter Rust takes as usize: typed o3d_count, or named in RUST_USIZE."""
+    return p["kind"] == "int32_t" and (p.get("typedef") == "o3d_count" or p["name"] in RUST_USIZE)
+
+
 def rust_conversions(m):
     """The statements run before the call: each usize taken for an int32_t, converted (shadowing it)."""
     return [f'        let {p["name"]} = crate::util::to_i32({p["name"]}, "{p["name"]}")?;' for p in m.params
-            if p["kind"] == "int32_t" and p["name"] in RUST_USIZE]
+            if rust_usize(p)]
 
 
 def gen_rust_methods(model, groups, handle):

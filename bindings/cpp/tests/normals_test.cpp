@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// estimate_normals through the wrapper: points on a tilted plane get the plane's normal.
+// estimate_normals through the wrapper: points on a tilted plane get the plane's normal; consistent
+// orientation over a tangent-plane graph makes randomly flipped sphere normals agree.
 #include <cmath>
+#include <random>
+#include <utility>
 
 #include "test_util.hpp"
 
@@ -57,4 +60,41 @@ TEST(Normals, OrientedTowardsUpKeepsSignAfterReestimate) {
     // Existing normals: new ones are flipped to agree with them.
     pc.estimate_normals(o3dpp::SearchParam::Knn(8));
     for (const auto& m : pc.get_normals()) EXPECT_GT(m[2], 0.0);
+}
+
+TEST(Normals, ConsistentTangentPlaneMakesFlippedSphereNormalsAgree) {
+    o3dpp::PointCloud pc = o3dpp_test::sphere_cloud(1000);
+    auto normals = pc.get_normals();
+    std::mt19937 rng(3);
+    for (auto& n : normals)
+        if (rng() % 2)
+            for (double& x : n) x = -x;
+    pc.set_normals(normals);
+    const auto points = pc.get_points();
+    // Default lambda and cos_alpha_tol (Hoppe's weights, every edge), then Open3D 0.18's penalty and a tolerance.
+    for (const auto& [lambda, cos_alpha_tol] : {std::pair<double, double>{0.0, 1.0}, {1.0, 0.5}}) {
+        o3dpp::PointCloud oriented = pc.clone();
+        if (lambda == 0.0)
+            oriented.orient_normals_consistent_tangent_plane(10);
+        else
+            oriented.orient_normals_consistent_tangent_plane(10, lambda, cos_alpha_tol);
+        // Each normal is only flipped, and all agree up to one global sign.
+        const auto got = oriented.get_normals();
+        const double sign = got[0][0] * points[0][0] + got[0][1] * points[0][1] + got[0][2] * points[0][2];
+        for (size_t i = 0; i < got.size(); ++i) {
+            const double d = got[i][0] * points[i][0] + got[i][1] * points[i][1] + got[i][2] * points[i][2];
+            EXPECT_NEAR(d * sign, 1.0, 1e-12) << "point " << i << " lambda " << lambda;
+        }
+    }
+}
+
+TEST(Normals, ConsistentTangentPlaneRejectsBadInput) {
+    o3dpp::PointCloud no_normals(plane_points(5));
+    EXPECT_O3D_ERROR(no_normals.orient_normals_consistent_tangent_plane(5), O3D_ERROR_INVALID_ARGUMENT);
+    o3dpp::PointCloud pc = o3dpp_test::sphere_cloud(50);
+    EXPECT_O3D_ERROR(pc.orient_normals_consistent_tangent_plane(0), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(pc.orient_normals_consistent_tangent_plane(5, -1.0), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(pc.orient_normals_consistent_tangent_plane(5, 0.0, std::nan("")), O3D_ERROR_INVALID_ARGUMENT);
+    o3dpp::PointCloud moved = std::move(pc);
+    EXPECT_O3D_ERROR(pc.orient_normals_consistent_tangent_plane(5), O3D_ERROR_INVALID_ARGUMENT);  // NULL handle
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// PointCloud: setters/getters/views round trip, float input, clone, append, geometry helpers.
+// PointCloud: setters/getters/views round trip, float input, clone, append, geometry helpers, duplicates.
 #include <cmath>
 
 #include "test_util.hpp"
@@ -177,4 +177,19 @@ TEST(PointCloud, OptionDefaultsComeFromTheLibrary) {
     changed.project_valid_depth_only = false;
     EXPECT_EQ(changed.to_c().stride, 3);
     EXPECT_EQ(changed.to_c().project_valid_depth_only, 0);
+}
+
+TEST(PointCloud, RemoveDuplicatedPointsKeepsTheFirstOfEach) {
+    o3dpp::PointCloud pc(std::vector<Vec3>{{0, 0, 0}, {1, 2, 3}, {0, 0, 0}, {4, 5, 6}, {1, 2, 3}, {1, 2, 3.5}});
+    pc.set_normals(std::vector<Vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}});
+    pc.set_colors(std::vector<Vec3>{{0, 0, 0}, {0.1, 0, 0}, {0.2, 0, 0}, {0.3, 0, 0}, {0.4, 0, 0}, {0.5, 0, 0}});
+    pc.remove_duplicated_points();
+    EXPECT_EQ(pc.get_points(), (std::vector<Vec3>{{0, 0, 0}, {1, 2, 3}, {4, 5, 6}, {1, 2, 3.5}}));
+    EXPECT_EQ(pc.get_normals(), (std::vector<Vec3>{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, -1}}));
+    EXPECT_EQ(pc.get_colors(), (std::vector<Vec3>{{0, 0, 0}, {0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}}));
+    // Nothing left to remove: unchanged.
+    pc.remove_duplicated_points();
+    EXPECT_EQ(pc.size(), 4u);
+    o3dpp::PointCloud moved = std::move(pc);
+    EXPECT_O3D_ERROR(pc.remove_duplicated_points(), O3D_ERROR_INVALID_ARGUMENT);  // NULL handle
 }

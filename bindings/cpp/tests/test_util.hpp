@@ -3,6 +3,7 @@
 // Helpers of the o3dpp GoogleTest tests: test data lookup and small synthetic clouds.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <random>
@@ -45,6 +46,22 @@ inline std::vector<o3dpp::Vec3> random_points(std::size_t n, double lo = -1.0, d
     std::vector<o3dpp::Vec3> pts(n);
     for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
     return pts;
+}
+
+/// `n` points spread evenly over the sphere of `radius` about `center` (a Fibonacci lattice: no two coincide,
+/// spacing about radius * sqrt(4 pi / n)), with outward unit normals.
+inline o3dpp::PointCloud sphere_cloud(std::size_t n, double radius = 1.0, const o3dpp::Vec3& center = {0, 0, 0}) {
+    const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+    std::vector<o3dpp::Vec3> points(n), normals(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double z = 1.0 - (2.0 * static_cast<double>(i) + 1.0) / static_cast<double>(n);
+        const double r = std::sqrt(1.0 - z * z), phi = golden * static_cast<double>(i);
+        normals[i] = {r * std::cos(phi), r * std::sin(phi), z};
+        for (int k = 0; k < 3; ++k) points[i][k] = center[k] + radius * normals[i][k];
+    }
+    o3dpp::PointCloud cloud(points);
+    cloud.set_normals(normals);
+    return cloud;
 }
 
 /// Assert that `stmt` throws o3dpp::Error with `code` and a non-empty message.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // TriangleMesh through the wrapper: primitives with analytic answers, arrays and views, clean-up,
-// processing, PLY round trip in memory, errors as exceptions.
+// removal by index and mask, processing, PLY round trip in memory, errors as exceptions.
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -290,4 +290,38 @@ TEST(TriangleMesh, MobiusUsesTheLibraryDefaults) {
     o3dpp::MobiusOptions bad;
     bad.length_split = 1;
     EXPECT_O3D_ERROR(TriangleMesh::create_mobius(bad), O3D_ERROR_INVALID_ARGUMENT);
+}
+
+TEST(TriangleMesh, RemoveByIndexAndMask) {
+    // The unit square (two triangles) and a third triangle out to (2, 0, 0); colors tell the vertices apart.
+    const TriangleMesh mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}}, {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}});
+    TriangleMesh colored = mesh.clone();
+    colored.set_vertex_colors({{0, 0, 0}, {0.1, 0, 0}, {0.2, 0, 0}, {0.3, 0, 0}, {0.4, 0, 0}});
+
+    TriangleMesh a = colored.clone();
+    a.remove_vertices_by_index({4, 4});  // repeats allowed
+    EXPECT_EQ(a.get_triangles(), (std::vector<Triangle>{{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_EQ(a.get_vertex_colors(), (std::vector<Vec3>{{0, 0, 0}, {0.1, 0, 0}, {0.2, 0, 0}, {0.3, 0, 0}}));
+
+    TriangleMesh b = colored.clone();
+    b.remove_vertices_by_mask({false, false, false, true, false});
+    EXPECT_EQ(b.get_vertices(), (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}}));
+    EXPECT_EQ(b.get_triangles(), (std::vector<Triangle>{{0, 1, 2}, {1, 3, 2}}));
+    EXPECT_EQ(b.get_vertex_colors()[3], (Vec3{0.4, 0, 0}));
+
+    TriangleMesh c = mesh.clone();
+    c.remove_triangles_by_index({0});
+    EXPECT_EQ(c.num_vertices(), 5u);
+    EXPECT_EQ(c.get_triangles(), (std::vector<Triangle>{{0, 2, 3}, {1, 4, 2}}));
+    c.remove_triangles_by_mask({false, true});
+    EXPECT_EQ(c.get_triangles(), (std::vector<Triangle>{{0, 2, 3}}));
+
+    // Bad input throws and leaves the mesh as it was.
+    TriangleMesh d = mesh.clone();
+    EXPECT_O3D_ERROR(d.remove_vertices_by_index({5}), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(d.remove_vertices_by_mask({true, false}), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(d.remove_triangles_by_index({-1}), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_O3D_ERROR(d.remove_triangles_by_mask({true, false, false, false}), O3D_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(d.get_vertices(), mesh.get_vertices());
+    EXPECT_EQ(d.get_triangles(), mesh.get_triangles());
 }

@@ -303,6 +303,7 @@ static partial class Test
         IntegrationTests(); // IntegrationTest.cs
         ColorMapTests(); // ColorMapTest.cs
         ReconstructionTests(); // ReconstructionTest.cs
+        SurfaceReconstructionTests(); // SurfaceReconstructionTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

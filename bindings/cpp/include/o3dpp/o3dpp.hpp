@@ -27,6 +27,7 @@
 #include "o3dpp/rgbd.hpp"
 #include "o3dpp/selection.hpp"
 #include "o3dpp/span.hpp"
+#include "o3dpp/tetramesh.hpp"
 #include "o3dpp/trianglemesh.hpp"
 #include "o3dpp/visualization.hpp"
 #include "o3dpp/visualizer.hpp"

@@ -131,6 +131,14 @@ public:
             return o3d_pointcloud_remove_radius_outlier(o, idx, cap, n, get(), nb_points, radius);
         });
     }
+    /// @brief Intrinsic Shape Signature keypoints (Zhong 2009): {keypoints with their normals and colors, their
+    /// indices in this cloud (ascending)}. @see o3d.geometry.keypoint.compute_iss_keypoints
+    std::pair<PointCloud, std::vector<int32_t>> compute_iss_keypoints(const IssOptions& options = {}) const {
+        const o3d_iss_options_t c = options.to_c();
+        return filtered([&](o3d_pointcloud_t** o, int32_t* idx, size_t cap, size_t* n) {
+            return o3d_pointcloud_compute_iss_keypoints(o, idx, cap, n, get(), &c);
+        });
+    }
     /// @brief Points inside `obb`, boundary included (outside when `invert`).
     PointCloud crop(const OrientedBoundingBox& obb, bool invert = false) const {
         const o3d_obb_t c = obb.to_c();

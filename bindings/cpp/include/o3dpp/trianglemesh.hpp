@@ -2,7 +2,8 @@
 #pragma once
 /// @file trianglemesh.hpp
 /// @brief o3dpp::TriangleMesh (move-only owner of an o3d_trianglemesh_t): arrays, textures, normals,
-/// clean-up, topology queries, processing, primitives, convex hulls and hidden-point removal.
+/// clean-up, topology queries, processing, primitives, surface reconstruction from point clouds (Poisson, ball
+/// pivoting, alpha shapes), convex hulls and hidden-point removal.
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "o3dpp/boundingbox.hpp"
 #include "o3dpp/common.hpp"
 #include "o3dpp/error.hpp"
+#include "o3dpp/feature.hpp"
 #include "o3dpp/generated/options.hpp"
 #include "o3dpp/generated/trianglemesh.hpp"
 #include "o3dpp/handle.hpp"
@@ -25,12 +27,16 @@ namespace o3dpp {
 using Triangle = std::array<int32_t, 3>;  ///< three vertex indices
 using Vec2 = std::array<double, 2>;       ///< a UV
 
+class TetraMesh;  // tetramesh.hpp (included at the end of this file)
+
 namespace detail {
 using MeshArrayFns =
     ArrayFns<&o3d_trianglemesh_has_array, &o3d_trianglemesh_array_shape, &o3d_trianglemesh_get_array,
              &o3d_trianglemesh_array_view, &o3d_trianglemesh_array_mutable_view, &o3d_trianglemesh_set_array,
              &o3d_trianglemesh_set_array_f32, &o3d_trianglemesh_get_index_array, &o3d_trianglemesh_index_array_view,
              &o3d_trianglemesh_index_array_mutable_view, &o3d_trianglemesh_set_index_array>;
+/// @brief A mask as the C API takes it: one byte per entry (std::vector<bool> packs bits).
+inline std::vector<uint8_t> mask_bytes(const std::vector<bool>& mask) { return {mask.begin(), mask.end()}; }
 }  // namespace detail
 
 /// @brief Edge-connected triangle clusters.
@@ -96,6 +102,29 @@ public:
     Rows3<double> vertices_mutable() { return array_mutable(A::Vertices); }
     Rows3<int32_t> triangles_mutable() { return array_mutable<int32_t>(A::Triangles); }
 
+    // --- removal by index or mask: what stays keeps its order and attributes; a bad index or a mask of the wrong
+    // size throws and leaves the mesh unchanged ---
+
+    /// @brief Remove the vertices at `indices` and every triangle that uses one of them.
+    TriangleMesh& remove_vertices_by_index(const std::vector<int32_t>& indices) {
+        return done(o3d_trianglemesh_remove_vertices_by_index(get(), indices.data(), indices.size()));
+    }
+    /// @brief Remove the vertices whose mask entry is true (one per vertex) and every triangle that uses one; e.g.
+    /// the low-density vertices of a Poisson surface.
+    TriangleMesh& remove_vertices_by_mask(const std::vector<bool>& mask) {
+        const std::vector<uint8_t> bytes = detail::mask_bytes(mask);
+        return done(o3d_trianglemesh_remove_vertices_by_mask(get(), bytes.data(), bytes.size()));
+    }
+    /// @brief Remove the triangles at `indices`; every vertex stays.
+    TriangleMesh& remove_triangles_by_index(const std::vector<int32_t>& indices) {
+        return done(o3d_trianglemesh_remove_triangles_by_index(get(), indices.data(), indices.size()));
+    }
+    /// @brief Remove the triangles whose mask entry is true (one per triangle); every vertex stays.
+    TriangleMesh& remove_triangles_by_mask(const std::vector<bool>& mask) {
+        const std::vector<uint8_t> bytes = detail::mask_bytes(mask);
+        return done(o3d_trianglemesh_remove_triangles_by_mask(get(), bytes.data(), bytes.size()));
+    }
+
     /// @brief Concatenate `other` (Open3D `mesh += other`).
     TriangleMesh& operator+=(const TriangleMesh& other) { return append(other); }
     /// @brief {min corner, max corner}.
@@ -152,6 +181,62 @@ public:
         const o3d_mobius_options_t c = options.to_c();
         return create(&o3d_trianglemesh_create_mobius, &c);
     }
+
+    // --- surface reconstruction from point clouds; options.progress gets the fraction done (false cancels:
+    // Error O3D_ERROR_CANCELLED) ---
+
+    /// @brief Screened Poisson reconstruction (Kazhdan & Hoppe 2013) of a cloud with normals: {a watertight mesh,
+    /// per vertex the sampling density there (trim low-density vertices with a quantile of it)}.
+    static std::pair<TriangleMesh, std::vector<double>> create_from_point_cloud_poisson(
+        const PointCloud& cloud, const PoissonOptions& options = {}) {
+        // Both outputs are owned as soon as the call wrote them, so a throwing callback leaks nothing.
+        UniqueHandle<o3d_trianglemesh_t, &o3d_trianglemesh_destroy> mesh;
+        UniqueHandle<o3d_feature_t, &o3d_feature_destroy> densities;
+        check(detail::with_progress(options.to_c(), options.progress, [&](const o3d_poisson_options_t* c) {
+            o3d_trianglemesh_t* m = nullptr;
+            o3d_feature_t* d = nullptr;
+            const o3d_status status = o3d_trianglemesh_create_from_point_cloud_poisson(&m, &d, cloud.get(), c);
+            mesh.reset(m);
+            densities.reset(d);
+            return status;
+        }));
+        std::vector<double> values = Feature(densities.release()).get_data();
+        return {TriangleMesh(mesh.release()), std::move(values)};
+    }
+    /// @brief Ball pivoting (Bernardini et al. 1999) over a cloud with normals, one ball radius after the other
+    /// (each > 0): the mesh's vertices are the cloud's points, its triangles wound to agree with the normals.
+    static TriangleMesh create_from_point_cloud_ball_pivoting(const PointCloud& cloud, const std::vector<double>& radii,
+                                                              const ProgressOptions& options = {}) {
+        return adopt([&](o3d_trianglemesh_t** out) {
+            return detail::with_progress(options.to_c(), options.progress, [&](const o3d_progress_options_t* c) {
+                return o3d_trianglemesh_create_from_point_cloud_ball_pivoting(out, cloud.get(), radii.data(),
+                                                                              radii.size(), c);
+            });
+        });
+    }
+    /// @brief Alpha shape (Edelsbrunner & Muecke 1994): the boundary of the Delaunay tetrahedra of circumradius
+    /// below `alpha` (> 0), wound outwards; a huge alpha gives the convex hull.
+    static TriangleMesh create_from_point_cloud_alpha_shape(const PointCloud& cloud, double alpha,
+                                                            const ProgressOptions& options = {}) {
+        return alpha_shape(cloud, alpha, nullptr, {}, options);
+    }
+    /// @brief The same, reusing `tetra_mesh` and `point_map` from TetraMesh::create_from_point_cloud(cloud)
+    /// (for several alphas over one cloud). Defined in tetramesh.hpp.
+    static TriangleMesh create_from_point_cloud_alpha_shape(const PointCloud& cloud, double alpha,
+                                                            const TetraMesh& tetra_mesh,
+                                                            const std::vector<int32_t>& point_map,
+                                                            const ProgressOptions& options = {});
+
+private:
+    static TriangleMesh alpha_shape(const PointCloud& cloud, double alpha, const o3d_tetramesh_t* tetra_mesh,
+                                    const std::vector<int32_t>& point_map, const ProgressOptions& options) {
+        return adopt([&](o3d_trianglemesh_t** out) {
+            return detail::with_progress(options.to_c(), options.progress, [&](const o3d_progress_options_t* c) {
+                return o3d_trianglemesh_create_from_point_cloud_alpha_shape(out, cloud.get(), alpha, tetra_mesh,
+                                                                            point_map.data(), point_map.size(), c);
+            });
+        });
+    }
 };
 
 // --- convex hulls (Qhull) and hidden-point removal (Katz, Tal, Basri 2007): free functions, since a cloud
@@ -180,3 +265,7 @@ inline std::pair<TriangleMesh, std::vector<int32_t>> hidden_point_removal(const 
 }
 
 }  // namespace o3dpp
+
+// TetraMesh needs TriangleMesh complete and completes TriangleMesh's alpha shape over a tetra mesh: whichever of
+// the two headers comes first, both classes are then defined.
+#include "o3dpp/tetramesh.hpp"

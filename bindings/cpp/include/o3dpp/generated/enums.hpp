@@ -139,6 +139,12 @@ enum class Axis : int32_t {
     Z = O3D_AXIS_Z,  ///< z
 };
 
+/// @brief The arrays of a tetra mesh (O3D_TETRAMESH_*).
+enum class TetraMeshArray : int32_t {
+    Vertices = O3D_TETRAMESH_VERTICES,  ///< N x 3 float64
+    Tetras = O3D_TETRAMESH_TETRAS,  ///< M x 4 int32 vertex indices
+};
+
 /// @brief The arrays of a triangle mesh (O3D_MESH_*).
 enum class MeshArray : int32_t {
     Vertices = O3D_MESH_VERTICES,  ///< N x 3 float64

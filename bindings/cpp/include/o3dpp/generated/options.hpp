@@ -85,6 +85,22 @@ struct ColorMapNonRigidOptionsFields {
 struct ColorMapNonRigidOptions : COptions<ColorMapNonRigidOptions, detail::ColorMapNonRigidOptionsFields, o3d_color_map_non_rigid_options_t, &o3d_color_map_non_rigid_options_init> {};
 
 namespace detail {
+/// @brief The fields of o3d_progress_options_t (common.h).
+struct ProgressOptionsFields {
+    int num_threads;  ///< 0 = library default; the result does not depend on it
+    ProgressCallback progress;  ///< fraction of the work done; may be empty; return false to cancel (an exception it throws cancels the call and is rethrown)
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief How a long call without tunables of its own runs: threads, progress and cancel. Defaults from o3d_progress_options_init.
+struct ProgressOptions : COptions<ProgressOptions, detail::ProgressOptionsFields, o3d_progress_options_t, &o3d_progress_options_init> {};
+
+namespace detail {
 /// @brief The fields of o3d_read_options_t (io.h).
 struct ReadOptionsFields {
     bool remove_nan_points;  ///< drop points with a NaN coordinate; default false
@@ -212,6 +228,31 @@ struct DepthToCloudOptionsFields {
 
 /// @brief PointCloud.create_from_depth_image keyword arguments. Defaults from o3d_depth_to_cloud_options_init.
 struct DepthToCloudOptions : COptions<DepthToCloudOptions, detail::DepthToCloudOptionsFields, o3d_depth_to_cloud_options_t, &o3d_depth_to_cloud_options_init> {};
+
+namespace detail {
+/// @brief The fields of o3d_iss_options_t (pointcloud.h).
+struct IssOptionsFields {
+    double salient_radius;  ///< neighbourhood radius of the scatter matrix, >= 0; 0 (default): 6x the cloud resolution
+    double non_max_radius;  ///< radius of the non-maximum suppression, >= 0; 0 (default): 4x the cloud resolution
+    double gamma_21;  ///< upper bound on lambda2 / lambda1, in (0, 1]; default 0.975
+    double gamma_32;  ///< upper bound on lambda3 / lambda2, in (0, 1]; default 0.975
+    int min_neighbors;  ///< fewer neighbours than this: not a keypoint; default 5
+    int num_threads;  ///< 0 = library default; the result does not depend on it
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.salient_radius, c.salient_radius);
+        f(s.non_max_radius, c.non_max_radius);
+        f(s.gamma_21, c.gamma_21);
+        f(s.gamma_32, c.gamma_32);
+        f(s.min_neighbors, c.min_neighbors);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief o3d.geometry.keypoint.compute_iss_keypoints keyword arguments. Defaults from o3d_iss_options_init.
+struct IssOptions : COptions<IssOptions, detail::IssOptionsFields, o3d_iss_options_t, &o3d_iss_options_init> {};
 
 namespace detail {
 /// @brief The fields of o3d_pose_graph_edge_t (posegraph.h).
@@ -438,6 +479,30 @@ struct MobiusOptionsFields {
 
 /// @brief TriangleMesh.create_mobius keyword arguments. Defaults from o3d_mobius_options_init.
 struct MobiusOptions : COptions<MobiusOptions, detail::MobiusOptionsFields, o3d_mobius_options_t, &o3d_mobius_options_init> {};
+
+namespace detail {
+/// @brief The fields of o3d_poisson_options_t (trianglemesh.h).
+struct PoissonOptionsFields {
+    int depth;  ///< maximum octree depth, in [1, 16]; default 8
+    double width;  ///< > 0: the finest cells' width, which then sets the depth; default 0 (use depth)
+    double scale;  ///< ratio of the reconstruction cube to the samples' bounding cube, > 0; default 1.1
+    bool linear_fit;  ///< true: iso-vertices by linear interpolation; default false
+    int num_threads;  ///< 0 = library default (Open3D's n_threads=-1); the result does not depend on it
+    ProgressCallback progress;  ///< fraction of the work done; may be empty; return false to cancel (an exception it throws cancels the call and is rethrown)
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.depth, c.depth);
+        f(s.width, c.width);
+        f(s.scale, c.scale);
+        f(s.linear_fit, c.linear_fit);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief TriangleMesh.create_from_point_cloud_poisson keyword arguments, plus progress. Defaults from o3d_poisson_options_init.
+struct PoissonOptions : COptions<PoissonOptions, detail::PoissonOptionsFields, o3d_poisson_options_t, &o3d_poisson_options_init> {};
 
 namespace detail {
 /// @brief The fields of o3d_render_option_t (visualization.h).

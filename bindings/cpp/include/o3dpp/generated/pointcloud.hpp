@@ -118,6 +118,14 @@ public:
     Self crop_aabb(const Vec3& min_bound, const Vec3& max_bound, bool invert = false) const {
         return Self::adopt([&](auto** out) { return o3d_pointcloud_crop_aabb(out, self().get(), min_bound.data(), max_bound.data(), invert ? 1 : 0); });
     }
+    /// @brief Orient the normals consistently (Hoppe et al. 1992): a Riemannian graph of the points (the Euclidean minimum spanning tree and the `k` nearest neighbours), weighted by how far neighbouring tangent planes disagree, and a traversal of its minimum spanning tree that flips each normal to agree with its parent's.
+    Self& orient_normals_consistent_tangent_plane(int k, double lambda = 0.0, double cos_alpha_tol = 1.0) {
+        return self().done(o3d_pointcloud_orient_normals_consistent_tangent_plane(self().get(), k, lambda, cos_alpha_tol));
+    }
+    /// @brief Remove points equal to an earlier point (coordinate for coordinate); their normals, colors and covariances go with them.
+    Self& remove_duplicated_points() {
+        return self().done(o3d_pointcloud_remove_duplicated_points(self().get()));
+    }
 
 private:
     Self& self() { return static_cast<Self&>(*this); }

@@ -1,9 +1,13 @@
-"""o3d.geometry: PointCloud, TriangleMesh, Image, RGBDImage, LineSet, VoxelGrid, Octree, KDTreeFlann,
-KDTreeSearchParam*, AxisAlignedBoundingBox, OrientedBoundingBox and the enums SimplificationContraction,
-FilterScope, ImageFilterType."""
+"""o3d.geometry: PointCloud, TriangleMesh, TetraMesh, Image, RGBDImage, LineSet, VoxelGrid, Octree, KDTreeFlann,
+KDTreeSearchParam*, AxisAlignedBoundingBox, OrientedBoundingBox, the enums SimplificationContraction,
+FilterScope, ImageFilterType, and the submodule keypoint (compute_iss_keypoints)."""
+import sys
+import types
+
 import numpy as np
 
 from . import _o3d
+from . import _surface_reconstruction  # noqa: F401  (TriangleMesh.create_from_point_cloud_*)
 
 from ._o3d import (  # noqa: F401
     ColorToIntensityConversionType,
@@ -21,8 +25,14 @@ from ._o3d import (  # noqa: F401
     LineSet,
     Octree,
     PointCloud,
+    TetraMesh,
     VoxelGrid,
 )
+
+# Open3D's o3d.geometry.keypoint submodule (importable as such).
+keypoint = types.ModuleType(__name__ + ".keypoint", "Open3D's o3d.geometry.keypoint: compute_iss_keypoints.")
+keypoint.compute_iss_keypoints = _o3d.compute_iss_keypoints
+sys.modules[keypoint.__name__] = keypoint
 
 
 class AxisAlignedBoundingBox:
@@ -281,8 +291,8 @@ def _image_reduce(self):
 
 Image.__reduce__ = _image_reduce
 
-__all__ = ["PointCloud", "TriangleMesh", "Image", "RGBDImage", "SimplificationContraction", "FilterScope",
+__all__ = ["PointCloud", "TriangleMesh", "TetraMesh", "Image", "RGBDImage", "SimplificationContraction", "FilterScope",
            "ImageFilterType", "ColorToIntensityConversionType", "KDTreeFlann", "KDTreeSearchParam",
            "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox",
            "OrientedBoundingBox", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo", "OctreeLeafNode",
-           "OctreePointColorLeafNode"]
+           "OctreePointColorLeafNode", "keypoint"]

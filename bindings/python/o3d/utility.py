@@ -106,6 +106,13 @@ class Vector3iVector(_Vector):
     _cols = 3
 
 
+class Vector4iVector(_Vector):
+    """(N, 4) int32 (e.g. a TetraMesh's tetras)."""
+
+    _dtypes = (np.int32,)
+    _cols = 4
+
+
 class Vector2dVector(_Vector):
     """(N, 2) float64 (e.g. triangle UVs)."""
 
@@ -221,6 +228,7 @@ sys.modules[random.__name__] = random
 # A Python callback must not be called once the interpreter is shutting down.
 atexit.register(_o3d._set_log_callback, None)
 
-__all__ = ["Vector3dVector", "Vector3iVector", "Vector2dVector", "Vector2iVector", "Matrix3dVector", "IntVector", "DoubleVector", "VerbosityLevel",
+__all__ = ["Vector3dVector", "Vector3iVector", "Vector4iVector", "Vector2dVector", "Vector2iVector", "Matrix3dVector",
+           "IntVector", "DoubleVector", "VerbosityLevel",
            "VerbosityContextManager", "set_verbosity_level", "get_verbosity_level", "set_log_callback",
            "set_num_threads", "get_num_threads", "random"]

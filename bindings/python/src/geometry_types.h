@@ -83,6 +83,10 @@ struct PyTrajectory {
 /// Shared conversions of the new bindings.
 std::string path_of(py::handle filename);
 uint64_t seed_or_random(py::handle seed);
+/// Non-negative int32 indices from a 1-D integer sequence (ValueError names `what`).
+std::vector<int32_t> int32_indices(py::handle obj, const char* what);
+/// One byte per entry (0 or 1) from a 1-D sequence of booleans or integers (ValueError names `what`).
+std::vector<uint8_t> byte_mask(py::handle obj, const char* what);
 py::array vec3_to_array(const double* v);
 py::array mat_to_array(const double* v, size_t rows, size_t cols);
 std::pair<std::array<double, 3>, std::array<double, 3>> aabb_bounds(py::handle box);

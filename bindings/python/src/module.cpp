@@ -16,6 +16,11 @@ void define_odometry(py::module_& m);
 void define_integration(py::module_& m);
 void define_color_map(py::module_& m);
 void define_reconstruction(py::module_& m);
+// tetramesh.cpp, surface_reconstruction.cpp (tetramesh_types.h) and keypoint.cpp.
+void declare_tetramesh(py::module_& m);
+void define_tetramesh(py::module_& m);
+void define_surface_reconstruction(py::module_& m);
+void define_keypoint(py::module_& m);
 }  // namespace o3dpy
 
 PYBIND11_MODULE(_o3d, m) {
@@ -32,6 +37,7 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_camera(m);
     o::declare_trianglemesh_enums(m);
     o::declare_trianglemesh(m);
+    o::declare_tetramesh(m);
     o::declare_lineset(m);
     o::declare_voxelgrid(m);
     o::declare_octree(m);
@@ -62,4 +68,7 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_integration(m);
     o::define_color_map(m);
     o::define_reconstruction(m);
+    o::define_tetramesh(m);
+    o::define_surface_reconstruction(m);
+    o::define_keypoint(m);
 }

@@ -25,25 +25,6 @@ PyPointCloud derive(const CloudPtr& h, F&& f) {
 
 PyPointCloud& cloud(py::handle self) { return self.cast<PyPointCloud&>(); }
 
-std::vector<int32_t> as_indices(py::handle obj) {
-    py::array a = py::array::ensure(obj);
-    if (!a) invalid("indices: expected a sequence of integers");
-    if (a.size() == 0) return {};
-    char kind = a.dtype().kind();
-    if (kind != 'i' && kind != 'u') invalid("indices: expected integers, got dtype " + std::string(py::str(a.dtype())));
-    if (a.ndim() != 1) invalid("indices: expected a 1-D sequence");
-    auto v = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-    if (!v) throw py::error_already_set();
-    std::vector<int32_t> out((size_t)v.size());
-    const int64_t* p = v.data();
-    for (size_t i = 0; i < out.size(); ++i) {
-        if (p[i] < 0 || p[i] > std::numeric_limits<int32_t>::max())
-            invalid("indices: index " + std::to_string(p[i]) + " is out of range");
-        out[i] = (int32_t)p[i];
-    }
-    return out;
-}
-
 template <typename F>
 py::array distances(const CloudPtr& h, F&& f) {
     std::vector<double> out;
@@ -142,7 +123,7 @@ void define_pointcloud(py::module_& m) {
         .def(
             "select_by_index",
             [](const PyPointCloud& self, py::handle indices, bool invert) {
-                std::vector<int32_t> idx = as_indices(indices);
+                std::vector<int32_t> idx = int32_indices(indices, "indices");
                 return derive(self.h, [&](o3d_pointcloud_t** out, const o3d_pointcloud_t* pc) {
                     return o3d_pointcloud_select_by_index(out, pc, idx.data(), idx.size(), invert ? 1 : 0);
                 });

@@ -15,6 +15,12 @@ PyTriangleMesh derive_mesh(const PyTriangleMesh& self, F&& f) {
     return PyTriangleMesh(out);
 }
 
+/// An in-place removal by indices or mask: the mesh's arrays change size, so live views are detached first.
+template <typename Arg, typename Call>
+void remove_in_place(PyTriangleMesh& self, const std::vector<Arg>& arg, Call call) {
+    locked_mut(self.for_resize(), [&](o3d_trianglemesh_t* m) { return call(m, arg.data(), arg.size()); });
+}
+
 template <typename F>
 PyTriangleMesh primitive(F&& f) {
     o3d_trianglemesh_t* out = nullptr;
@@ -47,6 +53,37 @@ void define_trianglemesh_processing(py::module_& m) {
             },
             py::arg("bounding_box"), "New mesh of the triangles whose three vertices lie in the AxisAlignedBoundingBox or "
                                    "OrientedBoundingBox.");
+
+    cls.def(
+           "remove_vertices_by_index",
+           [](PyTriangleMesh& self, py::handle vertex_indices) {
+               remove_in_place(self, int32_indices(vertex_indices, "vertex_indices"),
+                               &o3d_trianglemesh_remove_vertices_by_index);
+           },
+           py::arg("vertex_indices"), "Remove the vertices at vertex_indices and every triangle that uses one of them.")
+        .def(
+            "remove_vertices_by_mask",
+            [](PyTriangleMesh& self, py::handle vertex_mask) {
+                remove_in_place(self, byte_mask(vertex_mask, "vertex_mask"), &o3d_trianglemesh_remove_vertices_by_mask);
+            },
+            py::arg("vertex_mask"),
+            "Remove the vertices whose mask entry is True (one per vertex) and every triangle that uses one of them, "
+            "e.g. a Poisson surface trimmed by its densities.")
+        .def(
+            "remove_triangles_by_index",
+            [](PyTriangleMesh& self, py::handle triangle_indices) {
+                remove_in_place(self, int32_indices(triangle_indices, "triangle_indices"),
+                                &o3d_trianglemesh_remove_triangles_by_index);
+            },
+            py::arg("triangle_indices"), "Remove the triangles at triangle_indices; every vertex stays.")
+        .def(
+            "remove_triangles_by_mask",
+            [](PyTriangleMesh& self, py::handle triangle_mask) {
+                remove_in_place(self, byte_mask(triangle_mask, "triangle_mask"),
+                                &o3d_trianglemesh_remove_triangles_by_mask);
+            },
+            py::arg("triangle_mask"), "Remove the triangles whose mask entry is True (one per triangle); every vertex "
+                                      "stays.");
 
     const o3d_mobius_options_t mo = init_of(&o3d_mobius_options_init);
     cls.def_static(

@@ -38,3 +38,20 @@ def test_convex_hull_and_covariances_release_gil():
     assert len(out["hull"][1]) > 0 and pcd.has_covariances() and out["grid"].has_voxels()
     assert duration > 0.05
     assert stall < 0.5 * duration
+
+
+def test_surface_reconstruction_releases_gil():
+    from test_surface_reconstruction import oriented_sphere
+
+    pcd = oriented_sphere(20_000)
+    cube = o3d.geometry.PointCloud(np.random.default_rng(2).uniform(size=(20_000, 3)))
+    out = {}
+
+    def work():
+        out["poisson"] = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(pcd, depth=7)
+        out["tetra"] = o3d.geometry.TetraMesh.create_from_point_cloud(cube)
+
+    stall, duration = max_stall_during(work)
+    assert len(out["poisson"][0].triangles) > 0 and len(out["tetra"][1]) == 20_000
+    assert duration > 0.05
+    assert stall < 0.5 * duration

@@ -354,3 +354,28 @@ def test_open3d_tutorial_calls_run_unchanged(rng):
     mean, cov = pcd.compute_mean_and_covariance()
     assert mean.shape == (3,) and cov.shape == (3, 3)
     assert pcd.compute_mahalanobis_distance().shape == (len(pcd.points),)
+
+
+# ---- remove_duplicated_points ----
+
+def test_remove_duplicated_points_keeps_first_occurrences():
+    pts = np.array([[0.0, 0, 0], [1, 0, 0], [0, 0, 0], [0, 1, 0], [1, 0, 0], [0, 1, 1e-12]])
+    pcd = o3d.geometry.PointCloud(pts)
+    pcd.normals = np.arange(18, dtype=float).reshape(6, 3)
+    pcd.colors = np.linspace(0, 1, 18).reshape(6, 3)
+    assert pcd.remove_duplicated_points() is pcd  # Open3D returns the cloud itself
+    keep = [0, 1, 3, 5]  # exact repeats only: 1e-12 apart is another point
+    np.testing.assert_array_equal(np.asarray(pcd.points), pts[keep])
+    np.testing.assert_array_equal(np.asarray(pcd.normals), np.arange(18, dtype=float).reshape(6, 3)[keep])
+    np.testing.assert_array_equal(np.asarray(pcd.colors), np.linspace(0, 1, 18).reshape(6, 3)[keep])
+
+
+def test_remove_duplicated_points_without_repeats_and_views():
+    pts = grid_plane(5)
+    pcd = o3d.geometry.PointCloud(np.vstack([pts, pts]))
+    view = np.asarray(pcd.points)
+    pcd.remove_duplicated_points()
+    np.testing.assert_array_equal(np.asarray(pcd.points), pts)
+    assert view.shape == (50, 3)  # an old view keeps the old data (copy-on-write)
+    assert len(o3d.geometry.PointCloud().remove_duplicated_points().points) == 0
+    assert len(pcd.remove_duplicated_points().points) == 25

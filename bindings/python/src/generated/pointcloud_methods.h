@@ -163,6 +163,21 @@ void def_point_cloud_methods(py::class_<Self, Bases...>& cls) {
             locked_mut(self.h, [&](o3d_pointcloud_t* c_) { return o3d_pointcloud_orient_normals_towards_camera_location(c_, camera_location_ ? camera_location_->data() : nullptr); });
         },
         py::arg("camera_location") = py::make_tuple(0.0, 0.0, 0.0), "Flip normals to point towards `camera_location` (None: origin).");
+    cls.def(
+        "orient_normals_consistent_tangent_plane",
+        [](Self& self, int64_t k, double lambda, double cos_alpha_tol) {
+            const int32_t k_ = int32_of(k, "k");
+            locked_mut(self.h, [&](o3d_pointcloud_t* c_) { return o3d_pointcloud_orient_normals_consistent_tangent_plane(c_, k_, lambda, cos_alpha_tol); });
+        },
+        py::arg("k"), py::arg("lambda_penalty") = 0.0, py::arg("cos_alpha_tol") = 1.0, "Orient the normals consistently (Hoppe et al. 1992): a Riemannian graph of the points (the Euclidean minimum spanning tree and the `k` nearest neighbours), weighted by how far neighbouring tangent planes disagree, and a traversal of its minimum spanning tree that flips each normal to agree with its parent's.");
+    cls.def(
+        "remove_duplicated_points",
+        [](py::object self_) {
+            Self& self = self_.cast<Self&>();
+            locked_mut(self.for_resize(), [&](o3d_pointcloud_t* c_) { return o3d_pointcloud_remove_duplicated_points(c_); });
+            return self_;
+        },
+        "Remove points equal to an earlier point (coordinate for coordinate); their normals, colors and covariances go with them. Returns self.");
 }
 
 }  // namespace o3dpy

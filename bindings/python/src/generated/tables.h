@@ -177,6 +177,15 @@ struct Fields<o3d_color_map_non_rigid_options_t> {
     }
 };
 
+/// o3d_progress_options_t (common.h): How a long call without tunables of its own runs: threads, progress and cancel.
+template <>
+struct Fields<o3d_progress_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("num_threads", &o3d_progress_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
+    }
+};
+
 /// o3d_read_options_t (io.h): Read options (o3d.io.read_point_cloud keyword arguments).
 template <>
 struct Fields<o3d_read_options_t> {
@@ -250,6 +259,20 @@ struct Fields<o3d_depth_to_cloud_options_t> {
         f("depth_trunc", &o3d_depth_to_cloud_options_t::depth_trunc, As<double>{}, "Depths at or beyond this are dropped (metres); default 1000.");
         f("stride", &o3d_depth_to_cloud_options_t::stride, As<int32_t>{}, "Use every stride-th pixel in x and y; default 1.");
         f("project_valid_depth_only", &o3d_depth_to_cloud_options_t::project_valid_depth_only, As<bool>{}, "False: invalid pixels give NaN points (organised cloud); default True.");
+    }
+};
+
+/// o3d_iss_options_t (pointcloud.h): o3d.geometry.keypoint.compute_iss_keypoints keyword arguments.
+template <>
+struct Fields<o3d_iss_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("salient_radius", &o3d_iss_options_t::salient_radius, As<double>{}, "Neighbourhood radius of the scatter matrix, >= 0; 0 (default): 6x the cloud resolution.");
+        f("non_max_radius", &o3d_iss_options_t::non_max_radius, As<double>{}, "Radius of the non-maximum suppression, >= 0; 0 (default): 4x the cloud resolution.");
+        f("gamma_21", &o3d_iss_options_t::gamma_21, As<double>{}, "Upper bound on lambda2 / lambda1, in (0, 1]; default 0.975.");
+        f("gamma_32", &o3d_iss_options_t::gamma_32, As<double>{}, "Upper bound on lambda3 / lambda2, in (0, 1]; default 0.975.");
+        f("min_neighbors", &o3d_iss_options_t::min_neighbors, As<int32_t>{}, "Fewer neighbours than this: not a keypoint; default 5.");
+        f("num_threads", &o3d_iss_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
     }
 };
 
@@ -371,6 +394,19 @@ struct Fields<o3d_mobius_options_t> {
         f("flatness", &o3d_mobius_options_t::flatness, As<double>{}, "Factor on z (0 flattens the band into the plane); default 1.");
         f("width", &o3d_mobius_options_t::width, As<double>{}, "Width of the band, > 0; default 1.");
         f("scale", &o3d_mobius_options_t::scale, As<double>{}, "Factor on every coordinate, > 0; default 1.");
+    }
+};
+
+/// o3d_poisson_options_t (trianglemesh.h): TriangleMesh.create_from_point_cloud_poisson keyword arguments, plus progress.
+template <>
+struct Fields<o3d_poisson_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("depth", &o3d_poisson_options_t::depth, As<int32_t>{}, "Maximum octree depth, in [1, 16]; default 8.");
+        f("width", &o3d_poisson_options_t::width, As<double>{}, "> 0: the finest cells' width, which then sets the depth; default 0 (use depth).");
+        f("scale", &o3d_poisson_options_t::scale, As<double>{}, "Ratio of the reconstruction cube to the samples' bounding cube, > 0; default 1.1.");
+        f("linear_fit", &o3d_poisson_options_t::linear_fit, As<bool>{}, "True: iso-vertices by linear interpolation; default False.");
+        f("num_threads", &o3d_poisson_options_t::num_threads, As<int32_t>{}, "0 = library default (Open3D's n_threads=-1); the result does not depend on it.");
     }
 };
 

@@ -327,6 +327,28 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
             offset_of!(o3d_color_map_non_rigid_options_t, user_data),
             72,
         ),
+        ("sizeof(o3d_progress_options_t)", size_of::<o3d_progress_options_t>(), 24),
+        ("_Alignof(o3d_progress_options_t)", align_of::<o3d_progress_options_t>(), 8),
+        ("offsetof(o3d_progress_options_t, num_threads)", offset_of!(o3d_progress_options_t, num_threads), 4),
+        ("offsetof(o3d_progress_options_t, progress)", offset_of!(o3d_progress_options_t, progress), 8),
+        ("offsetof(o3d_progress_options_t, user_data)", offset_of!(o3d_progress_options_t, user_data), 16),
+        ("sizeof(o3d_poisson_options_t)", size_of::<o3d_poisson_options_t>(), 48),
+        ("_Alignof(o3d_poisson_options_t)", align_of::<o3d_poisson_options_t>(), 8),
+        ("offsetof(o3d_poisson_options_t, depth)", offset_of!(o3d_poisson_options_t, depth), 4),
+        ("offsetof(o3d_poisson_options_t, width)", offset_of!(o3d_poisson_options_t, width), 8),
+        ("offsetof(o3d_poisson_options_t, scale)", offset_of!(o3d_poisson_options_t, scale), 16),
+        ("offsetof(o3d_poisson_options_t, linear_fit)", offset_of!(o3d_poisson_options_t, linear_fit), 24),
+        ("offsetof(o3d_poisson_options_t, num_threads)", offset_of!(o3d_poisson_options_t, num_threads), 28),
+        ("offsetof(o3d_poisson_options_t, progress)", offset_of!(o3d_poisson_options_t, progress), 32),
+        ("offsetof(o3d_poisson_options_t, user_data)", offset_of!(o3d_poisson_options_t, user_data), 40),
+        ("sizeof(o3d_iss_options_t)", size_of::<o3d_iss_options_t>(), 48),
+        ("_Alignof(o3d_iss_options_t)", align_of::<o3d_iss_options_t>(), 8),
+        ("offsetof(o3d_iss_options_t, salient_radius)", offset_of!(o3d_iss_options_t, salient_radius), 8),
+        ("offsetof(o3d_iss_options_t, non_max_radius)", offset_of!(o3d_iss_options_t, non_max_radius), 16),
+        ("offsetof(o3d_iss_options_t, gamma_21)", offset_of!(o3d_iss_options_t, gamma_21), 24),
+        ("offsetof(o3d_iss_options_t, gamma_32)", offset_of!(o3d_iss_options_t, gamma_32), 32),
+        ("offsetof(o3d_iss_options_t, min_neighbors)", offset_of!(o3d_iss_options_t, min_neighbors), 40),
+        ("offsetof(o3d_iss_options_t, num_threads)", offset_of!(o3d_iss_options_t, num_threads), 44),
         // Callback pointers are plain (nullable) function pointers.
         ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
         ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
@@ -575,6 +597,34 @@ fn mesh_io_options_init_accept_rust_sizes_and_fill_defaults() {
         assert_eq!(w.struct_size as usize, size_of::<o3d_mesh_write_options_t>());
         assert_eq!((w.write_ascii, w.compressed), (0, 0));
         assert_eq!((w.write_vertex_normals, w.write_vertex_colors, w.write_triangle_uvs), (1, 1, 1));
+    }
+}
+
+#[test]
+fn surface_reconstruction_and_keypoint_options_init_accept_rust_sizes_and_fill_defaults() {
+    unsafe {
+        let mut p: o3d_progress_options_t = std::mem::zeroed();
+        let st = o3d_progress_options_init(&mut p, size_of::<o3d_progress_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!((p.struct_size as usize, p.num_threads), (size_of::<o3d_progress_options_t>(), 0));
+        assert!(p.progress.is_none() && p.user_data.is_null());
+
+        let mut s: o3d_poisson_options_t = std::mem::zeroed();
+        let st = o3d_poisson_options_init(&mut s, size_of::<o3d_poisson_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(s.struct_size as usize, size_of::<o3d_poisson_options_t>());
+        // Open3D's create_from_point_cloud_poisson(depth=8, width=0, scale=1.1, linear_fit=False).
+        assert_eq!((s.depth, s.width, s.scale, s.linear_fit, s.num_threads), (8, 0.0, 1.1, 0, 0));
+        assert!(s.progress.is_none());
+
+        let mut i: o3d_iss_options_t = std::mem::zeroed();
+        let st = o3d_iss_options_init(&mut i, size_of::<o3d_iss_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(i.struct_size as usize, size_of::<o3d_iss_options_t>());
+        // Open3D's compute_iss_keypoints(salient_radius=0, non_max_radius=0, gamma_21=0.975, gamma_32=0.975,
+        // min_neighbors=5).
+        assert_eq!((i.salient_radius, i.non_max_radius, i.gamma_21, i.gamma_32), (0.0, 0.0, 0.975, 0.975));
+        assert_eq!((i.min_neighbors, i.num_threads), (5, 0));
     }
 }
 

@@ -2,13 +2,16 @@
 //!
 //! Built only on the C API (`o3d-sys`, `libo3d.so.0`). Names follow Open3D:
 //! [`PointCloud`] (`o3d.geometry.PointCloud`), [`TriangleMesh`], [`LineSet`], [`VoxelGrid`],
-//! [`Octree`], [`OrientedBoundingBox`], [`Image`], [`RgbdImage`],
+//! [`TetraMesh`], [`Octree`], [`OrientedBoundingBox`], [`Image`], [`RgbdImage`],
 //! [`PinholeIntrinsic`] (`o3d.camera.PinholeCameraIntrinsic`), [`KDTreeFlann`],
 //! [`io::read_point_cloud`], [`io::read_triangle_mesh`], [`registration::registration_icp`],
 //! [`Feature`] and [`registration::compute_fpfh_feature`], global registration
 //! ([`registration::registration_ransac_based_on_feature_matching`],
 //! [`registration::registration_fgr_based_on_feature_matching`]), [`PoseGraph`] and
-//! [`registration::global_optimization`], and rendering without a display: [`OffscreenRenderer`]
+//! [`registration::global_optimization`], surface reconstruction
+//! ([`TriangleMesh::create_from_point_cloud_poisson`], [`TriangleMesh::create_from_point_cloud_ball_pivoting`],
+//! [`TriangleMesh::create_from_point_cloud_alpha_shape`]), [`keypoint::compute_iss_keypoints`],
+//! and rendering without a display: [`OffscreenRenderer`]
 //! (`o3d.visualization.rendering.OffscreenRenderer`) with [`RenderOption`] and [`RenderMaterial`],
 //! and the viewer [`Visualizer`] (hidden windows render headless).
 //!
@@ -18,8 +21,8 @@
 //! * Threading (the C rule: concurrent calls on one handle are safe when all take it `const`): the
 //!   handles are `Send` and `Sync`; every `&self` method calls only `const` C functions and every
 //!   mutation takes `&mut self`.
-//! * Callbacks (progress of ICP, RANSAC, FGR and global optimization; logging) are Rust closures run behind `catch_unwind`; a panic never
-//!   crosses the C boundary.
+//! * Callbacks (progress of ICP, RANSAC, FGR, global optimization and surface reconstruction; logging) are
+//!   Rust closures run behind `catch_unwind`; a panic never crosses the C boundary.
 //!
 //! ```no_run
 //! use o3d::{io, PointCloud, SearchParam};
@@ -49,6 +52,7 @@ pub mod integration;
 pub mod io;
 mod io_geometry;
 mod kdtree;
+pub mod keypoint;
 mod lineset;
 mod octree;
 pub mod odometry;
@@ -61,9 +65,12 @@ pub mod registration;
 mod registration_global;
 mod rgbd;
 mod selection;
+mod surface_reconstruction;
+mod tetramesh;
 mod trianglemesh;
 mod trianglemesh_ops;
 mod trianglemesh_primitives;
+mod trianglemesh_removal;
 mod util;
 pub mod visualization;
 mod visualizer;
@@ -81,6 +88,8 @@ pub use pointcloud::{PointCloud, SearchParam};
 pub use posegraph::{PoseGraph, PoseGraphEdge};
 pub use registration_global::random_seed;
 pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
+pub use surface_reconstruction::PoissonOptions;
+pub use tetramesh::TetraMesh;
 pub use trianglemesh::{MeshArray, TriangleMesh};
 pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
 pub use visualization::{
@@ -90,7 +99,7 @@ pub use visualization::{
 pub use voxelgrid::{Voxel, VoxelGrid};
 
 use error::check;
-use util::c_enum;
+use util::{c_enum, options};
 
 /// Library version string, e.g. `"0.1.0"`.
 pub fn version() -> &'static str {

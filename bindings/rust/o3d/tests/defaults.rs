@@ -2,11 +2,12 @@
 //! enums' values are the C constants.
 use std::mem::{size_of, MaybeUninit};
 
+use o3d::keypoint::IssOptions;
 use o3d::registration::{
     Estimation, FgrOptions, GlobalOptimizationMethod, GlobalOptimizationOptions, IcpOptions, PoseGraphEdge,
     RansacOptions, RobustKernel,
 };
-use o3d::{io, sys, DepthToCloudOptions, LogLevel, RgbdOptions, SearchParam};
+use o3d::{io, sys, DepthToCloudOptions, LogLevel, PoissonOptions, ProgressOptions, RgbdOptions, SearchParam};
 
 /// The struct as the C init function fills it.
 fn c_init<T>(init: unsafe extern "C" fn(*mut T, u32) -> sys::o3d_status) -> T {
@@ -109,6 +110,26 @@ fn rgbd_io_and_search_defaults_are_the_librarys() {
     let c = c_init(sys::o3d_search_param_init);
     assert_eq!(c.kind, sys::O3D_SEARCH_KNN);
     assert_eq!(SearchParam::default(), SearchParam::Knn { knn: c.knn as usize });
+}
+
+#[test]
+fn surface_reconstruction_and_keypoint_defaults_are_the_librarys() {
+    let c = c_init(sys::o3d_poisson_options_init);
+    let d = PoissonOptions::default();
+    assert_eq!((d.depth as i32, d.width, d.scale), (c.depth, c.width, c.scale));
+    assert_eq!((d.linear_fit, d.num_threads as i32), (c.linear_fit != 0, c.num_threads));
+    // Open3D's create_from_point_cloud_poisson(depth=8, width=0, scale=1.1, linear_fit=False).
+    assert_eq!((d.depth, d.width, d.scale, d.linear_fit), (8, 0.0, 1.1, false));
+
+    let c = c_init(sys::o3d_progress_options_init);
+    assert_eq!(ProgressOptions::default().num_threads as i32, c.num_threads);
+
+    let c = c_init(sys::o3d_iss_options_init);
+    let d = IssOptions::default();
+    assert_eq!((d.salient_radius, d.non_max_radius), (c.salient_radius, c.non_max_radius));
+    assert_eq!((d.gamma_21, d.gamma_32), (c.gamma_21, c.gamma_32));
+    assert_eq!((d.min_neighbors as i32, d.num_threads as i32), (c.min_neighbors, c.num_threads));
+    assert_eq!((d.gamma_21, d.gamma_32, d.min_neighbors), (0.975, 0.975, 5));
 }
 
 #[test]

@@ -248,3 +248,45 @@ fn handles_are_send_and_sync() {
     let n = std::thread::spawn(move || pc.len()).join().unwrap();
     assert_eq!(n, 500);
 }
+
+#[test]
+fn consistent_tangent_plane_orientation_makes_flipped_normals_agree() {
+    // A sphere sampling with every third normal flipped inwards.
+    let (points, mut normals) = fibonacci_sphere(2000, 1.0);
+    for n in normals.iter_mut().step_by(3) {
+        *n = n.map(|c| -c);
+    }
+    let mut pc = PointCloud::from_points(&points).unwrap();
+    pc.set_normals(&normals).unwrap();
+    pc.orient_normals_consistent_tangent_plane(10, 0.0, 1.0).unwrap();
+    // All outward or all inward (the traversal keeps one global sign), and only signs changed.
+    let outward = pc.points().iter().zip(pc.normals()).filter(|(p, n)| dot(**p, **n) > 0.0).count();
+    assert!(outward == 0 || outward == points.len(), "{outward} of {} outward", points.len());
+    for (after, before) in pc.normals().iter().zip(&normals) {
+        assert!((dot(*after, *before).abs() - 1.0).abs() < 1e-12);
+    }
+
+    assert_eq!(pc.orient_normals_consistent_tangent_plane(0, 0.0, 1.0).unwrap_err().code, ErrorCode::InvalidArgument);
+    let nan = pc.orient_normals_consistent_tangent_plane(10, f64::NAN, 1.0).unwrap_err();
+    assert_eq!(nan.code, ErrorCode::InvalidArgument);
+    let mut bare = PointCloud::from_points(&points[..10]).unwrap();
+    let no_normals = bare.orient_normals_consistent_tangent_plane(5, 0.0, 1.0).unwrap_err();
+    assert_eq!(no_normals.code, ErrorCode::InvalidArgument);
+}
+
+#[test]
+fn remove_duplicated_points_keeps_the_first_of_each() {
+    let mut pc =
+        PointCloud::from_points(&[[0.0; 3], [1.0, 2.0, 3.0], [0.0; 3], [4.0, 5.0, 6.0], [1.0, 2.0, 3.0]]).unwrap();
+    pc.set_colors(&[[0.1; 3], [0.2; 3], [0.3; 3], [0.4; 3], [0.5; 3]]).unwrap();
+    pc.set_normals(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]]).unwrap();
+    pc.remove_duplicated_points().unwrap();
+    assert_eq!(pc.points(), &[[0.0; 3], [1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
+    // The other arrays go with their points.
+    assert_eq!(pc.colors(), &[[0.1; 3], [0.2; 3], [0.4; 3]]);
+    assert_eq!(pc.normals(), &[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]);
+    // Nothing left to remove; an empty cloud is fine.
+    pc.remove_duplicated_points().unwrap();
+    assert_eq!(pc.len(), 3);
+    PointCloud::new().unwrap().remove_duplicated_points().unwrap();
+}

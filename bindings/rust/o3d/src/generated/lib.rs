@@ -16,3 +16,12 @@ c_enum! {
         Debug = sys::O3D_LOG_DEBUG,
     }
 }
+
+options! {
+    /// How a long call without tunables of its own runs: threads, progress and cancel. `Default` is the library's (`o3d_progress_options_init`).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub struct ProgressOptions(sys::o3d_progress_options_t, sys::o3d_progress_options_init) {
+        /// 0 = library default; the result does not depend on it.
+        pub num_threads: usize = num_threads,
+    }
+}

@@ -106,4 +106,17 @@ impl PointCloud {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::pointcloud::new_cloud(|out| unsafe { sys::o3d_pointcloud_crop_aabb(out, self.as_raw(), min_bound.as_ptr(), max_bound.as_ptr(), i32::from(invert)) })
     }
+    /// Orient the normals consistently (Hoppe et al. 1992): a Riemannian graph of the points (the Euclidean minimum spanning tree and the `k` nearest neighbours), weighted by how far neighbouring tangent planes disagree, and a traversal of its minimum spanning tree that flips each normal to agree with its parent's.
+    pub fn orient_normals_consistent_tangent_plane(&mut self, k: usize, lambda: f64, cos_alpha_tol: f64) -> Result<&mut Self> {
+        let k = crate::util::to_i32(k, "k")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_pointcloud_orient_normals_consistent_tangent_plane(self.raw_mut(), k, lambda, cos_alpha_tol) })?;
+        Ok(self)
+    }
+    /// Remove points equal to an earlier point (coordinate for coordinate); their normals, colors and covariances go with them.
+    pub fn remove_duplicated_points(&mut self) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_pointcloud_remove_duplicated_points(self.raw_mut()) })?;
+        Ok(self)
+    }
 }

@@ -155,3 +155,30 @@ pub fn rotation_error_deg(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
 pub fn mean_displacement(points: &[[f64; 3]], a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
     points.iter().map(|p| dist2(apply(a, *p), apply(b, *p)).sqrt()).sum::<f64>() / points.len().max(1) as f64
 }
+
+/// `n` points on the sphere of `radius` about the origin (a Fibonacci lattice: even spacing,
+/// deterministic) and their outward unit normals.
+pub fn fibonacci_sphere(n: usize, radius: f64) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let normals: Vec<[f64; 3]> = (0..n)
+        .map(|i| {
+            let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - z * z).sqrt();
+            let phi = golden * i as f64;
+            [r * phi.cos(), r * phi.sin(), z]
+        })
+        .collect();
+    (normals.iter().map(|u| u.map(|c| radius * c)).collect(), normals)
+}
+
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}

@@ -706,7 +706,8 @@ O3D_API o3d_status o3d_pointcloud_create_from_rgbd_image(o3d_pointcloud_t** out,
  * @param pc the point cloud, with normals
  * @param k neighbours per point in the graph (>= 1)
  * @param lambda weight of the edge-direction penalty (Open3D 0.18's `lambda`; 0: Hoppe's weights only), finite, >= 0
- * @param cos_alpha_tol graph edges whose normals' |cos| is below this are dropped (1: keep all), in [-1, 1]
+ * @param cos_alpha_tol drops the graph edges i->j that leave p_i within this cosine of n_i
+ *   (|n_i . (p_j - p_i)| / |p_j - p_i| > cos_alpha_tol; 1: keep all), finite
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a cloud without normals, a non-finite point or
  *   an argument out of range.
  */

@@ -2,7 +2,7 @@
 #pragma once
 /// @file poisson_extraction.h
 /// @brief Internal to Poisson reconstruction: evaluation of the solved function on the octree and
-/// crack-free marching-cubes extraction of its iso-surface at the finest depth.
+/// crack-free marching-cubes extraction of its iso-surface on the octree leaves.
 #include <Eigen/Core>
 #include <functional>
 #include <vector>
@@ -32,14 +32,14 @@ struct IsoSurface {
     std::vector<Eigen::Vector3i> triangles; ///< outward (towards larger chi) by the right-hand rule
 };
 
-/// @brief Marching cubes on the finest-depth cells that the iso-surface crosses, found by following the
-/// surface from `seed_cells` (finest-depth cell keys) and from sign changes on the complete grid of depth
-/// `seed_depth`. Vertices sit on cell edges and are shared by edge, and every face is split the same way
-/// by both of its cells, so the mesh has no cracks and is edge-manifold. With `close_at_boundary` the domain
-/// boundary counts as outside, so the mesh is closed even where the surface would leave the cube.
-/// @returns false when `keep_going` asks to stop.
-bool extract_iso_surface(const std::vector<Level>& levels, const FunctionEvaluator& chi, double iso,
-                         const std::vector<Key>& seed_cells, int seed_depth, IsoSurface& out,
-                         const std::function<bool()>& keep_going, int threads, bool close_at_boundary);
+/// @brief Marching cubes on the leaves of the octree (a depth-d cell is split when a depth-(d+1) unknown lies
+/// in its closure), so the surface is as fine as the octree where it passes: finest near the samples,
+/// coarse where it bridges unsampled regions. Cells of different sizes share sub-edge crossings and face
+/// segments, so the mesh has no cracks and is edge-manifold. The work is split into the cells of depth
+/// `task_depth`. With `close_at_boundary` the domain boundary counts as outside, so the mesh is closed even
+/// where the surface would leave the cube. @returns false when `keep_going` asks to stop.
+bool extract_iso_surface(const std::vector<Level>& levels, const FunctionEvaluator& chi, double iso, int task_depth,
+                         IsoSurface& out, const std::function<bool()>& keep_going, int threads,
+                         bool close_at_boundary);
 
 }  // namespace o3d::geometry::poisson

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <iterator>
 
-#include "o3d/geometry/radix_sort.h"
 #include "o3d/utility/error.h"
 
 namespace o3d::geometry::poisson {
@@ -25,12 +24,25 @@ void KeyIndex::build(const std::vector<Key>& keys) {
 }
 
 void sort_unique(std::vector<Key>& keys, int bits) {
-    // Radix sort beats comparison sorting on the millions of keys of deep octrees.
+    // LSD radix sort of the bare keys (beats comparison sorting on the millions of keys of deep octrees);
+    // a digit that is the same for every key costs one counting pass and no scatter.
     if (keys.size() > 4096) {
-        std::vector<std::pair<uint64_t, size_t>> items(keys.size());
-        for (size_t i = 0; i < keys.size(); ++i) items[i] = {keys[i], 0};
-        radix_sort_by_key(items, bits);
-        for (size_t i = 0; i < keys.size(); ++i) keys[i] = items[i].first;
+        constexpr int kDigitBits = 11;
+        constexpr size_t kBuckets = size_t{1} << kDigitBits;
+        std::vector<Key> scratch(keys.size());
+        for (int shift = 0; shift < bits; shift += kDigitBits) {
+            std::vector<size_t> count(kBuckets, 0);
+            for (Key k : keys) ++count[(k >> shift) & (kBuckets - 1)];
+            if (count[(keys[0] >> shift) & (kBuckets - 1)] == keys.size()) continue;
+            size_t sum = 0;
+            for (size_t& c : count) {
+                const size_t here = c;
+                c = sum;
+                sum += here;
+            }
+            for (Key k : keys) scratch[count[(k >> shift) & (kBuckets - 1)]++] = k;
+            keys.swap(scratch);
+        }
     } else {
         std::sort(keys.begin(), keys.end());
     }
@@ -62,12 +74,27 @@ std::vector<Key> grow_axis(const std::vector<Key>& keys, int axis, int res, Rang
 
 std::vector<Key> dilate(const std::vector<Key>& keys, int r, int res) {
     std::vector<Key> out = keys;
-    if (r <= 0) {
-        sort_unique(out);
-        return out;
+    sort_unique(out);
+    // Per axis: the union of the set shifted by -r..r along it. A shift adds one constant to every key that
+    // stays inside the grid, so each shifted copy is still sorted and the union is a merge, not a sort.
+    std::vector<Key> shifted, merged;
+    for (int axis = 0; axis < 3 && r > 0; ++axis) {
+        const int shift = (2 - axis) * kKeyBits;
+        std::vector<Key> acc = out;
+        for (int dlt = -r; dlt <= r; ++dlt) {
+            if (dlt == 0) continue;
+            shifted.clear();
+            for (Key k : out) {
+                const int c = int((k >> shift) & kKeyMask) + dlt;
+                if (c >= 0 && c <= res) shifted.push_back(dlt > 0 ? k + (Key(dlt) << shift) : k - (Key(-dlt) << shift));
+            }
+            merged.resize(acc.size() + shifted.size());
+            merged.erase(std::set_union(acc.begin(), acc.end(), shifted.begin(), shifted.end(), merged.begin()),
+                         merged.end());
+            acc.swap(merged);
+        }
+        out.swap(acc);
     }
-    for (int axis = 0; axis < 3; ++axis)
-        out = grow_axis(out, axis, res, [r](int c, int& lo, int& hi) { lo = c - r, hi = c + r; });
     return out;
 }
 
@@ -80,12 +107,10 @@ std::vector<Key> coarsen(const std::vector<Key>& keys, int r, int coarse_res) {
     return out;
 }
 
-std::vector<Level> build_levels(std::vector<Key> finest_seed, int depth, int full_depth, int fine_dilation,
+std::vector<Level> build_levels(std::vector<std::vector<Key>> seeds, int depth, int full_depth, int fine_dilation,
                                 int coarse_dilation) {
     std::vector<Level> levels(size_t(depth) + 1);
-    std::vector<Key> active = dilate(finest_seed, fine_dilation, 1 << depth);
-    finest_seed.clear();
-    finest_seed.shrink_to_fit();
+    std::vector<Key> active;
     for (int d = depth; d >= 0; --d) {
         Level& L = levels[size_t(d)];
         L.depth = d;
@@ -95,6 +120,14 @@ std::vector<Level> build_levels(std::vector<Key> finest_seed, int depth, int ful
             active = coarsen(std::vector<Key>(F.keys.begin(), F.keys.begin() + std::ptrdiff_t(F.n_active)),
                              coarse_dilation, L.res);
         }
+        if (!seeds[size_t(d)].empty() && d > full_depth) {
+            std::vector<Key> own = dilate(seeds[size_t(d)], fine_dilation, L.res);
+            std::vector<Key> merged;
+            merged.reserve(active.size() + own.size());
+            std::set_union(active.begin(), active.end(), own.begin(), own.end(), std::back_inserter(merged));
+            active.swap(merged);
+        }
+        std::vector<Key>().swap(seeds[size_t(d)]);
         if (d <= full_depth) {
             active.clear();
             for (int x = 0; x <= L.res; ++x)

@@ -72,11 +72,11 @@ std::vector<Key> dilate(const std::vector<Key>& keys, int r, int res);
 /// @brief Coarse vertices (depth d-1) whose hats overlap the fine hats in `keys`, grown by r (clamped).
 std::vector<Key> coarsen(const std::vector<Key>& keys, int r, int coarse_res);
 
-/// @brief Builds levels[0..depth]: the finest active set is `finest_seed` grown by `fine_dilation`; each
-/// coarser one holds the parents of the finer one grown by `coarse_dilation`, and depths <= full_depth are
-/// complete grids. Guarantees parents(active at d) ⊆ active at d-1, which makes the prolongation of the
-/// accumulated solution onto every level's one-ring exact.
-std::vector<Level> build_levels(std::vector<Key> finest_seed, int depth, int full_depth, int fine_dilation,
+/// @brief Builds levels[0..depth]: the active set of depth d is `seeds[d]` (grid vertices) grown by
+/// `fine_dilation`, together with the parents of the finer active set grown by `coarse_dilation`; depths
+/// <= full_depth are complete grids. Guarantees parents(active at d) ⊆ active at d-1, which makes the
+/// prolongation of the accumulated solution onto every level's one-ring exact.
+std::vector<Level> build_levels(std::vector<std::vector<Key>> seeds, int depth, int full_depth, int fine_dilation,
                                 int coarse_dilation);
 
 }  // namespace o3d::geometry::poisson

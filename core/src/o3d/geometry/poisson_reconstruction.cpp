@@ -29,12 +29,16 @@ namespace {
 using namespace poisson;
 
 constexpr int kMaxDepth = 16;
-// Depths up to this are complete grids (33^3 vertices at most): they fix the global inside/outside.
-constexpr int kFullDepth = 5;
+// Depths up to this are complete grids (17^3 vertices at most), solved tightly: they fix the global
+// inside/outside. Deeper depths follow the samples and converge in a few iterations.
+constexpr int kFullDepth = 4;
 // Finest active vertices: the sample cells' corners grown by this many vertices (the normal field's
 // divergence reaches exactly one ring, so every non-zero row of the finest system is kept).
 constexpr int kFineDilation = 1;
 constexpr int kCoarseDilation = 1;
+// A sample is splatted this many depths below its density depth (PoissonRecon's density values, see
+// poisson_density.h, sit about one depth under the depth its octree reaches).
+constexpr double kSampleDepthOffset = 1.0;
 
 void validate(const PointCloud& cloud, const PoissonOptions& o) {
     if (cloud.points.empty()) throw InvalidArgument("create_from_point_cloud_poisson: the point cloud is empty");
@@ -110,22 +114,38 @@ PoissonResult create_from_point_cloud_poisson(const PointCloud& cloud, const Poi
     }
     check(0.02);
 
+    // Each sample's depth: as deep as its sampling density supports (about one sample per cell, one depth
+    // finer, as PoissonRecon's octree goes), so that sparse scans are not refined into noise and
+    // empty fine cells; never coarser than the complete grids, never finer than `depth`.
+    const int full_depth = std::min(depth, kFullDepth);
+    std::vector<int8_t> sample_depth(n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) {
+        const double sd = std::floor(density_depth(density, u[size_t(i)]) + kSampleDepthOffset);
+        sample_depth[size_t(i)] = int8_t(std::min(double(depth), std::max(double(full_depth), sd)));
+    }
     std::vector<CellSamples> cells(size_t(depth) + 1);
     cells[size_t(depth)] = aggregate_samples(u, depth);
     for (int d = depth; d > 0; --d) cells[size_t(d) - 1] = aggregate_parents(cells[size_t(d)]);
-    std::vector<Key> seed;
-    seed.reserve(cells[size_t(depth)].cell.size() * 8);
-    for (Key c : cells[size_t(depth)].cell)
+    // Seeds: the corners of each sample's cell at its depth.
+    std::vector<std::vector<Key>> seeds(size_t(depth) + 1);
+    for (size_t i = 0; i < n; ++i) {
+        const int d = sample_depth[i];
+        int c[3];
+        double f[3];
+        locate(u[i], 1 << d, c, f);
         for (int k = 0; k < 8; ++k)
-            seed.push_back(pack(key_x(c) + (k & 1), key_y(c) + ((k >> 1) & 1), key_z(c) + ((k >> 2) & 1)));
-    std::vector<Level> levels =
-        build_levels(std::move(seed), depth, std::min(depth, kFullDepth), kFineDilation, kCoarseDilation);
+            seeds[size_t(d)].push_back(pack(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1)));
+    }
+    for (auto& s : seeds) sort_unique(s);
+    std::vector<Level> levels = build_levels(std::move(seeds), depth, full_depth, kFineDilation, kCoarseDilation);
     check(0.05);
 
     CascadeInput in;
     in.u = &u;
     in.area_normals = &area_normals;
     in.cells = &cells;
+    in.sample_depth = &sample_depth;
     // alpha * Area / sum of sample weights (the paper's normalisation; the cascade doubles it per depth).
     in.screening = options.point_weight * total_area / double(n);
     in.target = 0.5;
@@ -152,7 +172,7 @@ PoissonResult create_from_point_cloud_poisson(const PointCloud& cloud, const Poi
     }
 
     IsoSurface surface;
-    if (!extract_iso_surface(levels, chi, iso, cells[size_t(depth)].cell, std::min(depth, kFullDepth), surface,
+    if (!extract_iso_surface(levels, chi, iso, std::min(depth, kFullDepth), surface,
                              [&] { return !options.progress || options.progress(0.85); }, threads,
                              options.close_boundary))
         throw Cancelled("create_from_point_cloud_poisson: cancelled");

@@ -31,8 +31,9 @@ struct PoissonResult {
 
 /// @brief Reconstructs a closed surface from an oriented point cloud: the indicator-like function chi whose
 /// gradient fits the samples' normal field, screened towards 1/2 at the samples, solved coarse to fine on an
-/// octree refined only near the samples; its iso-surface at the mean sample value is triangulated at the
-/// finest depth. densities[i] is the local sampling density at vertex i expressed as an octree depth (about
+/// octree refined only near the samples, each down to the depth its sampling density supports (at most
+/// `depth`); its iso-surface at the mean sample value is triangulated on the octree's leaves, so surfaces
+/// bridging unsampled regions come out on coarse cells. densities[i] is the local sampling density at vertex i expressed as an octree depth (about
 /// depth-4 .. depth+1; low where the surface bridges unsampled regions).
 /// @throws InvalidArgument: empty cloud, no normals, non-finite point/normal, depth outside [1,16], width < 0,
 ///   scale <= 0 or non-finite, point_weight < 0 or non-finite, a width giving a depth above 16; Cancelled.

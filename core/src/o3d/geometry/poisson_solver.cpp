@@ -3,6 +3,8 @@
 /// @brief Cascadic conjugate-gradient solve over the octree depths.
 #include "o3d/geometry/poisson_solver.h"
 
+#include "o3d/geometry/poisson_field.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -11,8 +13,9 @@ namespace o3d::geometry::poisson {
 namespace {
 
 // Threads for a loop of n cheap iterations: small loops run serially, where a parallel region's start-up and
-// barrier would cost more than the work (and much more on an oversubscribed machine).
-int team(int threads, size_t n) { return n < 32768 ? 1 : threads; }
+// barrier would cost more than the work (and much more on an oversubscribed machine, where every barrier
+// can wait a scheduler time slice for a descheduled thread).
+int team(int threads, size_t n) { return n < 131072 ? 1 : threads; }
 
 // Sum of a[i]*b[i] in fixed blocks combined in order: the result does not depend on the thread count.
 double dot(const std::vector<double>& a, const std::vector<double>& b, size_t n, int threads) {
@@ -54,14 +57,27 @@ bool conjugate_gradient(const LevelSystem& S, size_t n, size_t full, const std::
         const double pq = dot(p, q, n, threads);
         if (!(pq > 0)) break;
         const double alpha = rz / pq;
+        // One pass updates x, r, z and sums r.r and r.z over fixed blocks (thread-count independent).
+        constexpr size_t kBlock = 8192;
+        const int64_t nb = int64_t((n + kBlock - 1) / kBlock);
+        std::vector<double> part_rr(static_cast<size_t>(nb)), part_rz(static_cast<size_t>(nb));
 #pragma omp parallel for num_threads(team(threads, n)) schedule(static)
-        for (int64_t i = 0; i < nn; ++i) {
-            x[size_t(i)] += alpha * p[size_t(i)];
-            r[size_t(i)] -= alpha * q[size_t(i)];
-            z[size_t(i)] = r[size_t(i)] / diag[size_t(i)];
+        for (int64_t blk = 0; blk < nb; ++blk) {
+            double rr = 0, rzb = 0;
+            const size_t e = std::min(n, size_t(blk + 1) * kBlock);
+            for (size_t i = size_t(blk) * kBlock; i < e; ++i) {
+                x[i] += alpha * p[i];
+                r[i] -= alpha * q[i];
+                z[i] = r[i] / diag[i];
+                rr += r[i] * r[i];
+                rzb += r[i] * z[i];
+            }
+            part_rr[size_t(blk)] = rr;
+            part_rz[size_t(blk)] = rzb;
         }
-        if (std::sqrt(dot(r, r, n, threads)) <= tol * r0) break;
-        const double rz_new = dot(r, z, n, threads);
+        double rr = 0, rz_new = 0;
+        for (int64_t blk = 0; blk < nb; ++blk) rr += part_rr[size_t(blk)], rz_new += part_rz[size_t(blk)];
+        if (std::sqrt(rr) <= tol * r0) break;
         const double beta = rz_new / rz;
         rz = rz_new;
 #pragma omp parallel for num_threads(team(threads, n)) schedule(static)
@@ -104,14 +120,11 @@ bool solve_cascade(std::vector<Level>& levels, const CascadeInput& in) {
     for (const Level& L : levels) total += double(L.n_active);
     auto report = [&](double extra) { return !in.progress || in.progress(std::min(1.0, (done + extra) / total)); };
 
-    // Gradient right-hand sides, finest first: coarse rows are exact restrictions of the fine ones.
-    std::vector<std::vector<double>> rhs(levels.size());
+    std::vector<std::vector<double>> rhs = deep_rhs(levels, *in.u, *in.area_normals, *in.sample_depth, threads);
+    ShallowField shallow(depth, *in.u, *in.area_normals, *in.sample_depth, threads);
     LevelSystem finest;
     assemble_level(levels[size_t(depth)], (*in.cells)[size_t(depth)], in.screening * std::ldexp(1.0, depth),
                    finest, threads);
-    rhs[size_t(depth)] = finest_rhs(levels[size_t(depth)], finest, *in.u, *in.area_normals, threads);
-    for (int d = depth; d > 0; --d)
-        rhs[size_t(d) - 1] = restrict_rhs(levels[size_t(d)], rhs[size_t(d)], levels[size_t(d) - 1], threads);
 
     for (int d = 0; d <= depth; ++d) {
         Level& L = levels[size_t(d)];
@@ -124,6 +137,7 @@ bool solve_cascade(std::vector<Level>& levels, const CascadeInput& in) {
                                        : prolong(levels[size_t(d) - 1], L, threads);
         // Residual of the coarser solution: b - A y'.
         std::vector<double> b = std::move(rhs[size_t(d)]);
+        shallow.add_rows(levels, d, S, b);
         add_screening_target(S, in.target, b);
         {
             std::vector<double> ay(n), scratch(S.pt_weight.size());

@@ -17,6 +17,7 @@ struct CascadeInput {
     const std::vector<Eigen::Vector3d>* u = nullptr;             ///< samples, unit-cube coordinates
     const std::vector<Eigen::Vector3d>* area_normals = nullptr;  ///< normal * estimated sample area
     const std::vector<CellSamples>* cells = nullptr;             ///< samples aggregated per depth
+    const std::vector<int8_t>* sample_depth = nullptr;           ///< depth each sample's normal is splatted at
     double screening = 0;     ///< alpha * area / samples: screening weight per sample at depth 0
     double target = 0.5;      ///< the value chi should take at the samples
     int threads = 1;

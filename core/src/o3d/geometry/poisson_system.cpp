@@ -16,9 +16,6 @@ namespace {
 // product with itself changes.
 double mass1(int off, int side = 0) { return off == 0 ? (side ? 1.0 / 3.0 : 2.0 / 3.0) : 1.0 / 6.0; }  // /h
 double stiff1(int off, int side = 0) { return off == 0 ? (side ? 1.0 : 2.0) : -1.0; }                  // *h
-double cross1(int off, int side = 0) {  // int B_{v+off} B_v'
-    return off == 0 ? (side < 0 ? -0.5 : (side > 0 ? 0.5 : 0.0)) : (off > 0 ? -0.5 : 0.5);
-}
 int side_of(int c, int res) { return c == 0 ? -1 : (c == res ? 1 : 0); }
 
 int offset_index(int dx, int dy, int dz) { return (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1); }
@@ -122,55 +119,6 @@ void assemble_level(const Level& L, const CellSamples& cells, double beta, Level
         const int64_t base = L.find(c);
         if (base >= 0) S.cell_point[size_t(base)] = int32_t(p);
     }
-}
-
-std::vector<double> finest_rhs(const Level& L, const LevelSystem& S, const std::vector<Eigen::Vector3d>& u,
-                               const std::vector<Eigen::Vector3d>& area_normals, int threads) {
-    // Splat: V = sum_w V_w B_w with V_w = sum_s a_s N_s B_w(s) / h^3, so that int V = sum_s a_s N_s.
-    std::vector<Eigen::Vector3d> field(L.keys.size() + 1, Eigen::Vector3d::Zero());
-    const double inv_h3 = double(L.res) * L.res * L.res;
-    for (size_t s = 0; s < u.size(); ++s) {
-        int c[3];
-        double f[3], w[8];
-        locate(u[s], L.res, c, f);
-        corner_weights(f, w);
-        for (int k = 0; k < 8; ++k) {
-            const int64_t idx = L.find(pack(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1)));
-            if (idx >= 0) field[size_t(idx)] += (w[k] * inv_h3) * area_normals[s];
-        }
-    }
-    // <grad B_v, B_w> per axis, for w = v + offset.
-    std::array<Eigen::Vector3d, 27> g;
-    const double h2 = S.h * S.h;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                g[size_t(offset_index(dx, dy, dz))] =
-                    h2 * Eigen::Vector3d(cross1(dx) * mass1(dy) * mass1(dz), mass1(dx) * cross1(dy) * mass1(dz),
-                                         mass1(dx) * mass1(dy) * cross1(dz));
-    const int64_t n = int64_t(L.n_active);
-    std::vector<double> rhs(size_t(n), 0.0);
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (int64_t i = 0; i < n; ++i) {
-        double acc = 0;
-        if (S.variant[size_t(i)] == 0) {
-            for (size_t o = 0; o < 27; ++o) acc += g[o].dot(field[size_t(S.nbr[size_t(i)][o])]);
-        } else {  // boundary row: the half hats integrate differently
-            const Key k = L.keys[size_t(i)];
-            const int sx = side_of(key_x(k), L.res), sy = side_of(key_y(k), L.res), sz = side_of(key_z(k), L.res);
-            for (int dz = -1; dz <= 1; ++dz)
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const Eigen::Vector3d gb =
-                            h2 * Eigen::Vector3d(cross1(dx, sx) * mass1(dy, sy) * mass1(dz, sz),
-                                                 mass1(dx, sx) * cross1(dy, sy) * mass1(dz, sz),
-                                                 mass1(dx, sx) * mass1(dy, sy) * cross1(dz, sz));
-                        acc += gb.dot(field[size_t(S.nbr[size_t(i)][size_t(offset_index(dx, dy, dz))])]);
-                    }
-        }
-        rhs[size_t(i)] = acc;
-    }
-    return rhs;
 }
 
 std::vector<double> restrict_rhs(const Level& fine, const std::vector<double>& fine_rhs, const Level& coarse,

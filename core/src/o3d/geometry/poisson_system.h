@@ -60,10 +60,6 @@ struct LevelSystem {
 
 /// @brief Neighbour table, screening points and stencil of a level (the rhs is filled separately).
 void assemble_level(const Level& L, const CellSamples& cells, double beta, LevelSystem& S, int threads);
-/// @brief Right-hand side <grad B_v, V> at the finest level for the normal field V = sum of the samples'
-/// area-weighted normals splatted onto the hats (so that V integrates to sum area * normal).
-std::vector<double> finest_rhs(const Level& L, const LevelSystem& S, const std::vector<Eigen::Vector3d>& u,
-                               const std::vector<Eigen::Vector3d>& area_normals, int threads);
 /// @brief rhs of depth d-1 from depth d: the coarse hats are combinations of fine ones (two-scale relation),
 /// so <grad B_coarse, V> is the same combination of the fine rows.
 std::vector<double> restrict_rhs(const Level& fine, const std::vector<double>& fine_rhs, const Level& coarse,

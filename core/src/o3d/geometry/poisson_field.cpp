@@ -50,23 +50,8 @@ void add_prolonged_field(const Level& coarse, const std::vector<Eigen::Vector3d>
                          std::vector<Eigen::Vector3d>& fine_field, int threads) {
     const int64_t n = int64_t(fine.keys.size());
 #pragma omp parallel for num_threads(threads) schedule(static)
-    for (int64_t i = 0; i < n; ++i) {
-        const Key k = fine.keys[size_t(i)];
-        const int c[3] = {key_x(k), key_y(k), key_z(k)};
-        int lo[3], hi[3];
-        for (int a = 0; a < 3; ++a) lo[a] = c[a] >> 1, hi[a] = (c[a] + 1) >> 1;
-        Eigen::Vector3d acc = Eigen::Vector3d::Zero();
-        for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int x = lo[0]; x <= hi[0]; ++x) {
-                    const int64_t idx = coarse.find(pack(x, y, z));
-                    if (idx < 0) continue;
-                    const double w = (lo[0] == hi[0] ? 1.0 : 0.5) * (lo[1] == hi[1] ? 1.0 : 0.5) *
-                                     (lo[2] == hi[2] ? 1.0 : 0.5);
-                    acc += w * coarse_field[size_t(idx)];
-                }
-        fine_field[size_t(i)] += acc;
-    }
+    for (int64_t i = 0; i < n; ++i)
+        fine_field[size_t(i)] += prolonged_value(coarse, coarse_field, fine.keys[size_t(i)]);
 }
 
 namespace {

@@ -7,6 +7,7 @@
 /// with the sampled surface, not with (2^depth)^3.
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace o3d::geometry::poisson {
@@ -64,6 +65,30 @@ struct Level {
 
     int64_t find(Key k) const { return index.find(keys.data(), k); }
 };
+
+/// @brief The two-scale relation of the trilinear hat at one vertex of the next finer depth: an even fine vertex is a
+/// coarse vertex, an odd one the mean of the two coarse vertices around it (per axis); coarse vertices not in
+/// `coarse` count as 0. `values` holds one value (a number or a vector) per key of `coarse`.
+template <typename T>
+T prolonged_value(const Level& coarse, const std::vector<T>& values, Key fine_key) {
+    const int c[3] = {key_x(fine_key), key_y(fine_key), key_z(fine_key)};
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) lo[a] = c[a] >> 1, hi[a] = (c[a] + 1) >> 1;
+    const double w = (lo[0] == hi[0] ? 1.0 : 0.5) * (lo[1] == hi[1] ? 1.0 : 0.5) * (lo[2] == hi[2] ? 1.0 : 0.5);
+    T acc;
+    if constexpr (std::is_arithmetic_v<T>) {
+        acc = 0;
+    } else {
+        acc.setZero();  // an Eigen vector
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+        for (int y = lo[1]; y <= hi[1]; ++y)
+            for (int x = lo[0]; x <= hi[0]; ++x) {
+                const int64_t idx = coarse.find(pack(x, y, z));
+                if (idx >= 0) acc += w * values[size_t(idx)];
+            }
+    return acc;
+}
 
 /// @brief Sorted, duplicate-free keys (all below 2^bits).
 void sort_unique(std::vector<Key>& keys, int bits = 3 * kKeyBits);

@@ -92,24 +92,7 @@ std::vector<double> prolong(const Level& coarse, const Level& fine, int threads)
     const int64_t n = int64_t(fine.keys.size());
     std::vector<double> y(size_t(n) + 1, 0.0);
 #pragma omp parallel for num_threads(threads) schedule(static)
-    for (int64_t i = 0; i < n; ++i) {
-        const Key k = fine.keys[size_t(i)];
-        const int c[3] = {key_x(k), key_y(k), key_z(k)};
-        // Two-scale relation of the hat: even fine vertex = coarse vertex; odd = mean of the two around it.
-        int lo[3], hi[3];
-        for (int a = 0; a < 3; ++a) lo[a] = c[a] >> 1, hi[a] = (c[a] + 1) >> 1;
-        double acc = 0;
-        for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int yy = lo[1]; yy <= hi[1]; ++yy)
-                for (int x = lo[0]; x <= hi[0]; ++x) {
-                    const int64_t idx = coarse.find(pack(x, yy, z));
-                    if (idx < 0) continue;
-                    const double w = (lo[0] == hi[0] ? 1.0 : 0.5) * (lo[1] == hi[1] ? 1.0 : 0.5) *
-                                     (lo[2] == hi[2] ? 1.0 : 0.5);
-                    acc += w * coarse.y[size_t(idx)];
-                }
-        y[size_t(i)] = acc;
-    }
+    for (int64_t i = 0; i < n; ++i) y[size_t(i)] = prolonged_value(coarse, coarse.y, fine.keys[size_t(i)]);
     return y;
 }
 

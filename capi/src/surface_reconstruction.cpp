@@ -99,11 +99,11 @@ O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_alpha_shape(o3d_tria
         require_out(out, "out");
         const auto& cloud = require(pc, "pc")->cloud;
         const o3d_progress_options_t o = o3d::capi::read_options(opts, kProgressDefaults, "opts");
-        o3d::capi::to_num_threads(o.num_threads);
+        const int threads = o3d::capi::to_num_threads(o.num_threads);
         const auto progress = o3d::capi::to_progress(o.progress, o.user_data);
         if (progress && !progress(0.0)) throw o3d::Cancelled("cancelled by the progress callback");
         if (!tetramesh) {
-            give_mesh(out, o3d::geometry::create_from_point_cloud_alpha_shape(cloud, alpha));
+            give_mesh(out, o3d::geometry::create_from_point_cloud_alpha_shape(cloud, alpha, nullptr, nullptr, threads));
         } else {
             if (num_point_map > 0) require(point_map, "point_map");
             const auto& tetras = tetramesh->mesh;
@@ -118,7 +118,7 @@ O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_alpha_shape(o3d_tria
                                                std::to_string(point_map[i]) + " is not a point of pc");
                 map[i] = static_cast<size_t>(point_map[i]);
             }
-            give_mesh(out, o3d::geometry::create_from_point_cloud_alpha_shape(cloud, alpha, &tetras, &map));
+            give_mesh(out, o3d::geometry::create_from_point_cloud_alpha_shape(cloud, alpha, &tetras, &map, threads));
         }
         if (progress && !progress(1.0)) {
             o3d_trianglemesh_destroy(*out);

@@ -55,7 +55,7 @@ void check_inputs(const PointCloud& cloud, double alpha) {
 }  // namespace
 
 TriangleMesh create_from_point_cloud_alpha_shape(const PointCloud& cloud, double alpha, const TetraMesh* tetra_mesh,
-                                                 const std::vector<size_t>* point_map) {
+                                                 const std::vector<size_t>* point_map, int num_threads) {
     check_inputs(cloud, alpha);
     TetraMeshFromPoints own;
     if (!tetra_mesh) {
@@ -83,7 +83,7 @@ TriangleMesh create_from_point_cloud_alpha_shape(const PointCloud& cloud, double
     }
 
     const int64_t num_tetras = static_cast<int64_t>(tetras.size());
-    const int threads = utility::resolve_num_threads(0);
+    const int threads = utility::resolve_num_threads(num_threads);
     const double alpha2 = alpha * alpha;  // inf for a huge alpha: every non-flat tetra is kept
 
     // 1. The alpha test, independently per tetra.

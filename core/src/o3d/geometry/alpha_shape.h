@@ -22,12 +22,13 @@ namespace o3d::geometry {
 /// cloud point (identity map). Output vertices: the tetra-mesh vertices some triangle uses, in tetra-mesh
 /// order (ascending input order for a tetrahedralization of ours), with the cloud's normals and colors
 /// (through point_map) when it has them — as Open3D, which also drops the unused vertices.
-/// An alpha below every circumradius gives an empty mesh (Open3D warns and does the same).
+/// An alpha below every circumradius gives an empty mesh (Open3D warns and does the same). `num_threads`: 0 =
+/// library default; the result does not depend on it.
 /// @throws InvalidArgument on alpha <= 0 or non-finite, < 4 points, non-finite points, a coplanar /
 ///   collinear / coincident cloud (Open3D raises Qhull's error there too), tetra indices out of range, a
 ///   non-finite tetra vertex, or a point_map of the wrong size or with an index outside the cloud.
 TriangleMesh create_from_point_cloud_alpha_shape(const PointCloud& cloud, double alpha,
                                                  const TetraMesh* tetra_mesh = nullptr,
-                                                 const std::vector<size_t>* point_map = nullptr);
+                                                 const std::vector<size_t>* point_map = nullptr, int num_threads = 0);
 
 }  // namespace o3d::geometry

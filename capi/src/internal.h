@@ -71,6 +71,11 @@ struct o3d_feature {
     o3d::registration::Feature feature;
 };
 
+/// Compressed rows: list i is values[offsets[i] .. offsets[i + 1]).
+struct o3d_index_lists {
+    std::vector<int64_t> offsets{0};
+    std::vector<int32_t> values;
+};
 struct o3d_buffer {
     std::vector<uint8_t> bytes;
 };
@@ -200,5 +205,24 @@ inline std::function<bool(double)> to_progress(o3d_progress_callback callback, v
 /// @brief A row-major 4x4 (16 doubles) as a matrix; NULL means identity. Non-finite entries are
 /// rejected with InvalidArgument naming `name`. (Defined in registration.cpp.)
 Eigen::Matrix4d read_transform(const double* m, const char* name);
+
+/// @brief Check a new-handle out-parameter and clear it, so a failing call leaves `*out == NULL`.
+template <typename Handle>
+Handle** require_out_handle(Handle** out, const char* name = "out") {
+    require(out, name);
+    *out = nullptr;
+    return out;
+}
+
+/// @brief Hand `value` to the caller as a new handle of type Handle (whose one member it becomes).
+template <typename Handle, typename Value>
+void emit_handle(Handle** out, Value&& value) {
+    *out = new Handle{std::forward<Value>(value)};
+}
+
+/// @brief Index lists from per-list vectors (each list as given).
+o3d_index_lists_t* make_index_lists(const std::vector<std::vector<int>>& lists);
+/// @brief Index lists from compressed rows (offsets of num_lists + 1, the first 0).
+o3d_index_lists_t* make_index_lists(const std::vector<int>& offsets, const std::vector<int>& values);
 
 }  // namespace o3d::capi

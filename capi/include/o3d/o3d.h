@@ -10,6 +10,7 @@
 #include "o3d/types.h"
 #include "o3d/pointcloud.h"
 #include "o3d/kdtree.h"
+#include "o3d/indexlists.h"
 #include "o3d/io.h"
 #include "o3d/feature.h"
 #include "o3d/registration.h"

@@ -1078,6 +1078,19 @@ O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_alpha_shape(o3d_tria
                                                                        size_t num_point_map,
                                                                        const o3d_progress_options_t* opts);
 
+/**
+ * @brief The vertex adjacency list (Open3D's compute_adjacency_list / adjacency_list): list v holds the vertices
+ * joined to v by a triangle side, ascending, never v itself; one list per vertex (empty for an unused vertex).
+ * @see TriangleMesh.compute_adjacency_list
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_index_lists_destroy(); left NULL on failure.
+ * @param out receives the new lists (NULL on failure)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a triangle index out of range.
+ */
+O3D_API o3d_status o3d_trianglemesh_compute_adjacency_list(o3d_index_lists_t** out, const o3d_trianglemesh_t* mesh);
+
 O3D_END_DECL
 
 #endif /* O3D_TRIANGLEMESH_H */

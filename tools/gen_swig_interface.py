@@ -56,6 +56,7 @@ CAPACITY = {
     "o3d_search_result_get_indices": "o3dx_search_count(result, 1)",
     "o3d_search_result_get_distances2": "o3dx_search_count(result, 1)",
     "o3d_octree_locate_leaf_node": "query",
+    "o3d_index_lists_get_offsets": "query", "o3d_index_lists_get_values": "query",
     "o3d_pointcloud_compute_nearest_neighbor_distance": PC_SIZE.format("pc"),
     "o3d_pointcloud_compute_point_cloud_distance": PC_SIZE.format("source"),
     "o3d_pointcloud_remove_statistical_outlier": PC_SIZE.format("pc"),

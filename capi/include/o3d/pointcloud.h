@@ -765,6 +765,77 @@ O3D_API o3d_status o3d_pointcloud_compute_iss_keypoints(o3d_pointcloud_t** out, 
                                                         const o3d_iss_options_t* opts);
 
 
+/* ---- Smoothing (Open3D 0.20's PointCloud.smooth_*) ---- */
+
+/**
+ * @brief Moving-least-squares-style smoothing: each point is projected onto the weighted PCA plane of its
+ * neighbourhood (itself included; weights exp(-d^2 / r^2) for a radius or hybrid search, uniform for KNN); a point
+ * with fewer than 3 neighbours is kept. Normals, when present, become the planes' normals, consistently oriented;
+ * colors are kept. @see PointCloud.smooth_mls
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud
+ * @param param the neighbourhood search (NULL: Open3D's default, hybrid with radius 0.05 and 30 neighbours)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad search parameter or a non-finite point.
+ */
+O3D_API o3d_status o3d_pointcloud_smooth_mls(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                             const o3d_search_param_t* param);
+/**
+ * @brief Graph-Laplacian smoothing: `iterations` times, x_i += lambda * (mean of its `knn` nearest other points
+ * - x_i), every point from the previous iteration; the kNN graph is rebuilt each time unless
+ * `use_fixed_neighborhoods`. Normals and colors are kept. @see PointCloud.smooth_laplacian
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud
+ * @param iterations number of iterations (0 returns a copy)
+ * @param lambda the step (finite)
+ * @param knn neighbours per point (>= 1)
+ * @param use_fixed_neighborhoods build the kNN graph once, from the input
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a negative count, knn 0, a non-finite lambda or point.
+ */
+O3D_API o3d_status o3d_pointcloud_smooth_laplacian(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                                   o3d_count iterations, double lambda, o3d_count knn,
+                                                   o3d_bool use_fixed_neighborhoods);
+/**
+ * @brief Taubin smoothing: per iteration a Laplacian pass with `lambda`, then one with `mu` (negative: it undoes
+ * the shrinking). Otherwise as o3d_pointcloud_smooth_laplacian. @see PointCloud.smooth_taubin
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud
+ * @param iterations number of iterations (0 returns a copy)
+ * @param lambda the shrinking step (finite)
+ * @param mu the inflating step (finite)
+ * @param knn neighbours per point (>= 1)
+ * @param use_fixed_neighborhoods build the kNN graph once, from the input
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a negative count, knn 0, a non-finite lambda, mu or point.
+ */
+O3D_API o3d_status o3d_pointcloud_smooth_taubin(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                                o3d_count iterations, double lambda, double mu, o3d_count knn,
+                                                o3d_bool use_fixed_neighborhoods);
+/**
+ * @brief Bilateral smoothing (one pass): each point becomes the average of its neighbours weighted by
+ * exp(-d^2 / 2 sigma_s^2) * exp(-((p_i - p_k) . n_i)^2 / 2 sigma_r^2), n_i its unit normal (estimated from 30
+ * neighbours when the cloud has none, and then kept). @see PointCloud.smooth_bilateral
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_pointcloud_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param pc the point cloud
+ * @param param the neighbourhood search (NULL: Open3D's default, hybrid with radius 0.05 and 30 neighbours)
+ * @param sigma_s the spatial standard deviation (finite, > 0)
+ * @param sigma_r the standard deviation along the normal (finite, > 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad search parameter or sigma, a non-finite
+ *   point or normal.
+ */
+O3D_API o3d_status o3d_pointcloud_smooth_bilateral(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
+                                                   const o3d_search_param_t* param, double sigma_s, double sigma_r);
+
 O3D_END_DECL
 
 #endif /* O3D_POINTCLOUD_H */

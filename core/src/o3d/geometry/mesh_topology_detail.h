@@ -3,8 +3,7 @@
 /// @file mesh_topology_detail.h
 /// @brief Internal: the vertex-link and orientation tests behind is_vertex_manifold / is_orientable, shared
 /// with the queries that list or repair what those tests find (mesh_non_manifold, mesh_orientation), so
-/// that the answers agree: the same code as the anonymous helpers of mesh_topology.cpp, which should call
-/// these instead of keeping its own copies. Each assumes validated triangles.
+/// that the answers agree. Each assumes validated triangles.
 #include <vector>
 
 #include "o3d/geometry/mesh_adjacency.h"

@@ -1091,6 +1091,112 @@ O3D_API o3d_status o3d_trianglemesh_create_from_point_cloud_alpha_shape(o3d_tria
  */
 O3D_API o3d_status o3d_trianglemesh_compute_adjacency_list(o3d_index_lists_t** out, const o3d_trianglemesh_t* mesh);
 
+/**
+ * @brief The non-manifold edges (Open3D's get_non_manifold_edges): edges with more than two triangles, and, when
+ * `allow_boundary_edges` is 0, also those with one. Each edge as (min, max) vertex index, row after row, ascending.
+ * Capacity and count are in edges (rows of 2 int32).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` rows of 2 (NULL: only report the count)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param mesh the mesh
+ * @param allow_boundary_edges whether edges of one triangle are allowed (not listed)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `mesh` or `out_n`, or a triangle index out of range;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
+ */
+O3D_API o3d_status o3d_trianglemesh_get_non_manifold_edges(int32_t* out, size_t capacity, size_t* out_n,
+                                                           const o3d_trianglemesh_t* mesh,
+                                                           o3d_bool allow_boundary_edges);
+/**
+ * @brief The non-manifold vertices (Open3D's get_non_manifold_vertices): vertices whose triangles do not form one
+ * fan (their link is not connected), ascending.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` items (NULL: only report the count)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `mesh` or `out_n`, or a triangle index out of range;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
+ */
+O3D_API o3d_status o3d_trianglemesh_get_non_manifold_vertices(int32_t* out, size_t capacity, size_t* out_n,
+                                                              const o3d_trianglemesh_t* mesh);
+/**
+ * @brief The pairs (i < j) of triangles that share no vertex index and intersect (Open3D's
+ * get_self_intersecting_triangles), ascending. Zero-area and non-finite triangles are ignored. Capacity and count
+ * are in pairs (rows of 2 int32).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` rows of 2 (NULL: only report the count)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `mesh` or `out_n`, or a triangle index out of range;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
+ */
+O3D_API o3d_status o3d_trianglemesh_get_self_intersecting_triangles(int32_t* out, size_t capacity, size_t* out_n,
+                                                                    const o3d_trianglemesh_t* mesh);
+/**
+ * @brief Whether any triangle of `mesh` intersects any triangle of `other` (touching counts).
+ * @see TriangleMesh.is_intersecting
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives 1 (true) or 0 (false)
+ * @param mesh the mesh
+ * @param other the other mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a triangle index out of range.
+ */
+O3D_API o3d_status o3d_trianglemesh_is_intersecting(int32_t* out, const o3d_trianglemesh_t* mesh,
+                                                    const o3d_trianglemesh_t* other);
+/**
+ * @brief Turn triangles over so that every edge shared by two triangles is walked once each way (Open3D's
+ * orient_triangles); in each connected part the lowest-index triangle keeps its winding, and the normals of the
+ * turned triangles are negated. A mesh that cannot be oriented (a Moebius strip, an edge of three triangles) is
+ * left unchanged and gives 0.
+ *
+ * Threads: needs exclusive access to `mesh`.
+ * @param out receives 1 (true) or 0 (false): whether the mesh is now consistently oriented
+ * @param mesh the mesh
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a triangle index out of range.
+ */
+O3D_API o3d_status o3d_trianglemesh_orient_triangles(int32_t* out, o3d_trianglemesh_t* mesh);
+/**
+ * @brief Sharpening: `number_of_iterations` times, v += strength * sum over its neighbours (v - neighbour), for
+ * the attributes `filter_scope` selects (Open3D's filter_sharpen; colors are not clamped, as there). Otherwise as
+ * o3d_trianglemesh_filter_smooth_simple. @see TriangleMesh.filter_sharpen
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param number_of_iterations number of iterations (>= 0)
+ * @param strength the sharpening strength (finite)
+ * @param filter_scope which attributes change (O3D_FILTER_SCOPE_*)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no vertices, a triangle index out of range, a
+ *   negative iteration count, a non-finite strength or an unknown scope.
+ */
+O3D_API o3d_status o3d_trianglemesh_filter_sharpen(o3d_trianglemesh_t** out, const o3d_trianglemesh_t* mesh,
+                                                   int32_t number_of_iterations, double strength,
+                                                   o3d_filter_scope filter_scope);
+/**
+ * @brief An ellipsoid centred at the origin with semi-axes `radius_x`, `radius_y`, `radius_z` along x, y, z: the
+ * vertices and triangles of Open3D's create_ellipsoid (2 poles and resolution - 1 rings of 2 * resolution
+ * vertices), wound outwards. @see TriangleMesh.create_ellipsoid
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param radius_x semi-axis along x (finite, > 0)
+ * @param radius_y semi-axis along y (finite, > 0)
+ * @param radius_z semi-axis along z (finite, > 0)
+ * @param resolution rings from pole to pole (>= 2)
+ * @param create_uv_map whether to add Open3D's per-corner UV coordinates
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad radius or resolution.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_ellipsoid(o3d_trianglemesh_t** out, double radius_x, double radius_y,
+                                                     double radius_z, int32_t resolution, o3d_bool create_uv_map);
+
 O3D_END_DECL
 
 #endif /* O3D_TRIANGLEMESH_H */

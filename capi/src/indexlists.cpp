@@ -27,6 +27,7 @@ o3d_index_lists_t* make_index_lists(const std::vector<std::vector<int>>& lists) 
 }
 
 o3d_index_lists_t* make_index_lists(const std::vector<int>& offsets, const std::vector<int>& values) {
+    if (offsets.empty() && values.empty()) return new o3d_index_lists();
     if (offsets.empty() || offsets.front() != 0 || size_t(offsets.back()) != values.size())
         throw std::logic_error("make_index_lists: offsets do not cover the values");
     auto handle = std::make_unique<o3d_index_lists>();

@@ -76,6 +76,45 @@ O3D_API o3d_status o3d_obb_get_box_points(double out[24], const o3d_obb_t* obb);
 O3D_API o3d_status o3d_obb_get_point_indices_within(int32_t* out_indices, size_t capacity, size_t* out_n,
                                                     const o3d_obb_t* obb, const double* xyz, size_t n);
 
+/**
+ * @brief The minimum-volume oriented box of `n` points (Open3D's OrientedBoundingBox.create_from_points_minimal):
+ * searched over the directions of the convex hull's faces, each paired with the smallest rectangle of the hull
+ * projected along it, then refined; never larger than Open3D's on its tests (not proven exact). Axes are the
+ * right-handed order closest to the identity.
+ *
+ * Threads: any thread.
+ * @param out receives the box
+ * @param xyz points, row-major n x 3 (may be NULL when n == 0)
+ * @param n number of points (rows of 3 doubles) in `xyz`
+ * @param robust joggles the input so degenerate (e.g. planar) point sets still give a box
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 points, non-finite coordinates or
+ *   coplanar points without `robust`.
+ */
+O3D_API o3d_status o3d_obb_create_from_points_minimal(o3d_obb_t* out, const double* xyz, size_t n, o3d_bool robust);
+
+/** o3d.geometry.OrientedBoundingEllipsoid(center, R, radii): the solid {center + R diag(radii) u : |u| <= 1}. */
+typedef struct o3d_obe {
+    double center[3]; /**< the ellipsoid's centre */
+    double R[9];      /**< row-major; column k is the direction of semi-axis k */
+    double radii[3];  /**< the semi-axis lengths (>= 0) */
+} o3d_obe_t;
+
+/**
+ * @brief The minimum-volume enclosing ellipsoid of `n` points (Open3D 0.20's
+ * OrientedBoundingEllipsoid.create_from_points): Khachiyan's algorithm over the convex hull's vertices, with
+ * Open3D's tolerance (so a point may lie up to about 0.2% outside), axes as close to the identity as a rotation
+ * allows.
+ *
+ * Threads: any thread.
+ * @param out receives the ellipsoid
+ * @param xyz points, row-major n x 3 (may be NULL when n == 0)
+ * @param n number of points (rows of 3 doubles) in `xyz`
+ * @param robust joggles the hull's input (a flat set still fails: its ellipsoid has no volume)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 points, non-finite coordinates or
+ *   coplanar points.
+ */
+O3D_API o3d_status o3d_obe_create_from_points(o3d_obe_t* out, const double* xyz, size_t n, o3d_bool robust);
+
 O3D_END_DECL
 
 #endif /* O3D_BOUNDINGBOX_H */

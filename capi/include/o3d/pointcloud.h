@@ -836,6 +836,126 @@ O3D_API o3d_status o3d_pointcloud_smooth_taubin(o3d_pointcloud_t** out, const o3
 O3D_API o3d_status o3d_pointcloud_smooth_bilateral(o3d_pointcloud_t** out, const o3d_pointcloud_t* pc,
                                                    const o3d_search_param_t* param, double sigma_s, double sigma_r);
 
+/* ---- Bounding volumes, covariances, planar patches, traced down-sampling ---- */
+
+/**
+ * @brief The minimum-volume oriented box of the points (o3d_obb_create_from_points_minimal).
+ * @see PointCloud.get_minimal_oriented_bounding_box
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the box
+ * @param pc the point cloud
+ * @param robust joggles the input so degenerate (e.g. planar) point sets still give a box
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 points, a non-finite point or a
+ *   flat cloud without `robust`.
+ */
+O3D_API o3d_status o3d_pointcloud_get_minimal_oriented_bounding_box(o3d_obb_t* out, const o3d_pointcloud_t* pc,
+                                                                    o3d_bool robust);
+/**
+ * @brief The minimum-volume enclosing ellipsoid of the points (o3d_obe_create_from_points).
+ * @see PointCloud.get_oriented_bounding_ellipsoid
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the ellipsoid
+ * @param pc the point cloud
+ * @param robust joggles the hull's input
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 points, a non-finite point or a
+ *   flat cloud.
+ */
+O3D_API o3d_status o3d_pointcloud_get_oriented_bounding_ellipsoid(o3d_obe_t* out, const o3d_pointcloud_t* pc,
+                                                                  o3d_bool robust);
+/**
+ * @brief Each point's neighbourhood covariance (divided by the count, the point itself included; fewer than 3
+ * neighbours give the identity), without changing the cloud: Open3D's static
+ * PointCloud.estimate_point_covariances. Written as N row-major 3x3 matrices (9 doubles each); capacity and
+ * count are in matrices.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` matrices of 9 doubles (NULL: only report the count)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param pc the point cloud
+ * @param param the neighbourhood search (NULL: KNN 30)
+ * @param num_threads threads to use: 0 = the library default (o3d_set_num_threads), negative is invalid
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `pc` or `out_n`, a bad search parameter, a non-finite
+ *   point or a negative `num_threads`; O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still
+ *   reported).
+ */
+O3D_API o3d_status o3d_pointcloud_estimate_point_covariances(double* out, size_t capacity, size_t* out_n,
+                                                             const o3d_pointcloud_t* pc,
+                                                             const o3d_search_param_t* param, int32_t num_threads);
+
+/** Options of o3d_pointcloud_detect_planar_patches (Open3D's keywords and defaults). */
+typedef struct o3d_planar_patch_options {
+    uint32_t struct_size;                /**< sizeof(o3d_planar_patch_options_t), set by the init */
+    double normal_variance_threshold_deg; /**< largest spread of the normals in a patch, in (0, 90]; default 60 */
+    double coplanarity_deg;              /**< flatness: a larger angle asks a flatter patch, in (0, 90]; default 75 */
+    double outlier_ratio;                /**< largest share of outliers in a patch, in [0, 1); default 0.75 */
+    double min_plane_edge_length;        /**< shortest long edge kept (0: 1% of the cloud's largest extent); default 0 */
+    o3d_count min_num_points;            /**< fewest points in a patch (0: max(10, N / 1000)); default 0 */
+    o3d_search_param_t search_param;     /**< the neighbourhood that grows patches; default KNN 30 */
+    int32_t num_threads;                 /**< 0 = the library default; default 0 */
+} o3d_planar_patch_options_t;
+
+/**
+ * @brief Fill Open3D's defaults.
+ *
+ * Threads: any thread.
+ * @param opts the struct to fill
+ * @param struct_size sizeof the struct as the caller knows it (an older, smaller size is accepted)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a `struct_size` this library does not know.
+ */
+O3D_API o3d_status o3d_planar_patch_options_init(o3d_planar_patch_options_t* opts, uint32_t struct_size);
+/**
+ * @brief Planar patches (Araujo & Oliveira 2020, Open3D's detect_planar_patches): an octree split by a
+ * robust-statistics planarity test, then patches grown and merged; one oriented box per patch (column 2 of R the
+ * patch normal), largest patch first. The cloud needs normals. Capacity and count are in boxes.
+ * @see PointCloud.detect_planar_patches
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out caller buffer of `capacity` boxes (NULL: only report the count)
+ * @param capacity how many items the output buffer holds (ignored when it is NULL)
+ * @param out_n receives the item count (always, also when the buffer is NULL or too small)
+ * @param pc the point cloud (with normals)
+ * @param opts options (NULL: the defaults of the matching `*_init`)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `pc` or `out_n`, a bad `opts->struct_size`, an empty
+ *   cloud or one without normals, a non-finite point or normal, or an option out of range;
+ *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
+ */
+O3D_API o3d_status o3d_pointcloud_detect_planar_patches(o3d_obb_t* out, size_t capacity, size_t* out_n,
+                                                        const o3d_pointcloud_t* pc,
+                                                        const o3d_planar_patch_options_t* opts);
+/**
+ * @brief Voxel down-sampling that remembers where each output point came from (Open3D's
+ * voxel_down_sample_and_trace). Voxel (i, j, k) spans min_bound + voxel_size * [i, i+1) x ...; each occupied
+ * voxel gives the mean point (normals and colors averaged; with `approximate_class`, the color becomes (c, c, c)
+ * with c the most frequent integer part of the red channel). Output points come sorted by voxel (z, y, x).
+ * `out_cubic_ids` gets 8 values per output point, one per octant of its voxel (bit 0, 1, 2 set when the point is
+ * in the upper half along x, y, z): the largest input index in that octant, or -1. `out_original_indices` gets,
+ * per output point, the input indices it averages, ascending. Points outside the bounds are kept.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: the three handles are the caller's (o3d_pointcloud_destroy, o3d_index_lists_destroy); all left NULL
+ * on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param out_cubic_ids receives one list of 8 indices per output point (NULL on failure)
+ * @param out_original_indices receives one list of input indices per output point (NULL on failure)
+ * @param pc the point cloud
+ * @param voxel_size the voxel edge (finite, > 0)
+ * @param min_bound the grid's origin
+ * @param max_bound the grid's far corner (>= min_bound)
+ * @param approximate_class whether colors are classes (see above) instead of averages
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad voxel size or bounds, a non-finite point
+ *   or a voxel index beyond int32.
+ */
+O3D_API o3d_status o3d_pointcloud_voxel_down_sample_and_trace(o3d_pointcloud_t** out,
+                                                              o3d_index_lists_t** out_cubic_ids,
+                                                              o3d_index_lists_t** out_original_indices,
+                                                              const o3d_pointcloud_t* pc, double voxel_size,
+                                                              const double min_bound[3], const double max_bound[3],
+                                                              o3d_bool approximate_class);
+
+
 O3D_END_DECL
 
 #endif /* O3D_POINTCLOUD_H */

@@ -1196,6 +1196,63 @@ O3D_API o3d_status o3d_trianglemesh_filter_sharpen(o3d_trianglemesh_t** out, con
  */
 O3D_API o3d_status o3d_trianglemesh_create_ellipsoid(o3d_trianglemesh_t** out, double radius_x, double radius_y,
                                                      double radius_z, int32_t resolution, o3d_bool create_uv_map);
+/**
+ * @brief The minimum-volume oriented box of the vertices (o3d_obb_create_from_points_minimal).
+ * @see TriangleMesh.get_minimal_oriented_bounding_box
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the box
+ * @param mesh the mesh
+ * @param robust joggles the input so degenerate (e.g. planar) vertex sets still give a box
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 vertices, a non-finite vertex or a
+ *   flat mesh without `robust`.
+ */
+O3D_API o3d_status o3d_trianglemesh_get_minimal_oriented_bounding_box(o3d_obb_t* out, const o3d_trianglemesh_t* mesh,
+                                                                      o3d_bool robust);
+/**
+ * @brief The minimum-volume enclosing ellipsoid of the vertices (o3d_obe_create_from_points).
+ * @see TriangleMesh.get_oriented_bounding_ellipsoid
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the ellipsoid
+ * @param mesh the mesh
+ * @param robust joggles the hull's input
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, fewer than 4 vertices, a non-finite vertex or a
+ *   flat mesh.
+ */
+O3D_API o3d_status o3d_trianglemesh_get_oriented_bounding_ellipsoid(o3d_obe_t* out, const o3d_trianglemesh_t* mesh,
+                                                                    o3d_bool robust);
+/**
+ * @brief The box as a closed mesh of 8 vertices (Open3D's corner order, get_box_points) and 12 triangles wound
+ * outwards, its extents multiplied by `scale` about the centre. @see TriangleMesh.create_from_oriented_bounding_box
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param obb the box (finite, extents >= 0, R orthonormal)
+ * @param scale factors for the three extents (NULL: 1, 1, 1; finite, > 0)
+ * @param create_uv_map whether to add Open3D's per-corner UV coordinates
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an invalid box or scale.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_from_oriented_bounding_box(o3d_trianglemesh_t** out, const o3d_obb_t* obb,
+                                                                      const double scale[3], o3d_bool create_uv_map);
+/**
+ * @brief The ellipsoid as a mesh: o3d_trianglemesh_create_ellipsoid of its radii times `scale`, rotated by R and
+ * moved to its centre, painted white as Open3D paints it. @see TriangleMesh.create_from_oriented_bounding_ellipsoid
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param obe the ellipsoid (finite, radii > 0, R orthonormal)
+ * @param scale factors for the three radii (NULL: 1, 1, 1; finite, > 0)
+ * @param resolution rings from pole to pole (>= 2)
+ * @param create_uv_map whether to add Open3D's per-corner UV coordinates
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an invalid ellipsoid, scale or resolution.
+ */
+O3D_API o3d_status o3d_trianglemesh_create_from_oriented_bounding_ellipsoid(o3d_trianglemesh_t** out,
+                                                                            const o3d_obe_t* obe, const double scale[3],
+                                                                            int32_t resolution, o3d_bool create_uv_map);
+
 
 O3D_END_DECL
 

@@ -57,6 +57,13 @@ CAPACITY = {
     "o3d_search_result_get_distances2": "o3dx_search_count(result, 1)",
     "o3d_octree_locate_leaf_node": "query",
     "o3d_index_lists_get_offsets": "query", "o3d_index_lists_get_values": "query",
+    **{f"o3d_trianglemesh_{c}": "query" for c in (
+        "get_non_manifold_edges", "get_non_manifold_vertices", "get_self_intersecting_triangles")},
+    **{f"o3d_halfedgemesh_{c}": "query" for c in (
+        "get_array", "get_triangles", "get_half_edges", "boundary_half_edges_from_vertex",
+        "boundary_vertices_from_vertex")},
+    "o3d_pointcloud_estimate_point_covariances": PC_SIZE.format("pc"),
+    "o3d_pointcloud_detect_planar_patches": "query",
     "o3d_pointcloud_compute_nearest_neighbor_distance": PC_SIZE.format("pc"),
     "o3d_pointcloud_compute_point_cloud_distance": PC_SIZE.format("source"),
     "o3d_pointcloud_remove_statistical_outlier": PC_SIZE.format("pc"),
@@ -83,7 +90,10 @@ TEXT = {"o3d_visualizer_get_view_status"}
 LENGTH = {"o3d_feature_create_from_data": "dimension * num", "o3d_kdtree_create_from_points_xd": "dimension * n"}
 PAIRS = {"o3d_correspondences_from_features", "o3d_registration_result_get_correspondence_set"}
 # Values per row of a copy-out array whose count is in rows (default 1; PAIRS: 2).
-OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3, "o3d_tsdf_volume_extract_volume_tsdf": 2,
+OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3,
+             "o3d_trianglemesh_get_non_manifold_edges": 2, "o3d_trianglemesh_get_self_intersecting_triangles": 2,
+             "o3d_halfedgemesh_get_array": 3, "o3d_halfedgemesh_get_triangles": 3, "o3d_halfedgemesh_get_half_edges": 5,
+             "o3d_pointcloud_estimate_point_covariances": 9, "o3d_pointcloud_detect_planar_patches": 15, "o3d_tsdf_volume_extract_volume_tsdf": 2,
              "o3d_tsdf_volume_extract_volume_color": 3}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
 ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}

@@ -14,6 +14,7 @@
 #include "o3d/common.h"
 #include "o3d/pointcloud.h"
 #include "o3d/camera/pinhole_camera.h"
+#include "o3d/geometry/half_edge_mesh.h"
 #include "o3d/geometry/image.h"
 #include "o3d/geometry/line_set.h"
 #include "o3d/geometry/octree.h"
@@ -35,6 +36,9 @@ struct o3d_trianglemesh {
     o3d::geometry::TriangleMesh mesh;
 };
 
+struct o3d_halfedgemesh {
+    o3d::geometry::HalfEdgeTriangleMesh mesh;
+};
 struct o3d_tetramesh {
     o3d::geometry::TetraMesh mesh;
 };

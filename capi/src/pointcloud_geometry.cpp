@@ -47,7 +47,7 @@ O3D_API o3d_status o3d_planar_patch_options_init(o3d_planar_patch_options_t* opt
     return guard(__func__, [&] { o3d::capi::init_options(opts, struct_size, kPlanarPatchDefaults, "opts"); });
 }
 
-O3D_API o3d_status o3d_pointcloud_detect_planar_patches(o3d_obb_t* out, size_t capacity, size_t* out_n,
+O3D_API o3d_status o3d_pointcloud_detect_planar_patches(double* out, size_t capacity, size_t* out_n,
                                                         const o3d_pointcloud_t* pc,
                                                         const o3d_planar_patch_options_t* opts) {
     return guard(__func__, [&] {
@@ -60,16 +60,18 @@ O3D_API o3d_status o3d_pointcloud_detect_planar_patches(o3d_obb_t* out, size_t c
             cloud, o.normal_variance_threshold_deg, o.coplanarity_deg, o.outlier_ratio, o.min_plane_edge_length,
             static_cast<size_t>(o.min_num_points), o3d::capi::to_search_param(&o.search_param),
             o3d::capi::to_num_threads(o.num_threads));
-        std::vector<o3d_obb_t> rows(boxes.size());
+        static_assert(sizeof(o3d_obb_t) == 15 * sizeof(double), "o3d_obb_t is 15 packed doubles");
+        std::vector<double> rows(15 * boxes.size());
         for (size_t i = 0; i < boxes.size(); ++i) {
+            double* row = rows.data() + 15 * i;
             for (int k = 0; k < 3; ++k) {
-                rows[i].center[k] = boxes[i].center(k);
-                rows[i].extent[k] = boxes[i].extent(k);
+                row[k] = boxes[i].center(k);
+                row[12 + k] = boxes[i].extent(k);
             }
             for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) rows[i].R[3 * r + c] = boxes[i].R(r, c);
+                for (int c = 0; c < 3; ++c) row[3 + 3 * r + c] = boxes[i].R(r, c);
         }
-        copy_out(rows.data(), rows.size(), out, capacity, out_n);
+        copy_out(rows.data(), boxes.size(), out, capacity, out_n, 15);
     });
 }
 

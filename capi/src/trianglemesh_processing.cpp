@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // C API: the processing functions of trianglemesh.h (sampling, simplification, smoothing, subdivision,
-// cropping), each writing a new handle over o3d::geometry.
+// cropping, as-rigid-as-possible deformation), each writing a new handle over o3d::geometry.
 #include <Eigen/Core>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "internal.h"
 #include "o3d/geometry/mesh_crop.h"
+#include "o3d/geometry/mesh_deform_arap.h"
 #include "o3d/geometry/mesh_poisson_disk.h"
 #include "o3d/geometry/mesh_sampling.h"
 #include "o3d/geometry/mesh_simplify_quadric.h"
@@ -161,3 +163,29 @@ O3D_API o3d_status o3d_trianglemesh_crop_aabb(o3d_trianglemesh_t** out, const o3
 }
 
 }  // extern "C"
+
+O3D_API o3d_status o3d_trianglemesh_deform_as_rigid_as_possible(o3d_trianglemesh_t** out,
+                                                                const o3d_trianglemesh_t* mesh,
+                                                                const int32_t* constraint_vertex_indices,
+                                                                const double* constraint_vertex_positions,
+                                                                size_t num_constraints, int32_t max_iter,
+                                                                o3d_arap_energy energy, double smoothed_alpha) {
+    return guard(__func__, [&] {
+        require_out(out);
+        if (num_constraints > 0) {
+            require(constraint_vertex_indices, "constraint_vertex_indices");
+            require(constraint_vertex_positions, "constraint_vertex_positions");
+        }
+        if (energy != O3D_ARAP_ENERGY_SPOKES && energy != O3D_ARAP_ENERGY_SMOOTHED)
+            throw o3d::InvalidArgument("energy " + std::to_string(energy) +
+                                       " is not O3D_ARAP_ENERGY_SPOKES or O3D_ARAP_ENERGY_SMOOTHED");
+        std::vector<int> ids(constraint_vertex_indices, constraint_vertex_indices + num_constraints);
+        std::vector<Eigen::Vector3d> positions(num_constraints);
+        for (size_t i = 0; i < num_constraints; ++i)
+            positions[i] = Eigen::Vector3d(constraint_vertex_positions[3 * i], constraint_vertex_positions[3 * i + 1],
+                                           constraint_vertex_positions[3 * i + 2]);
+        return emit(out, o3d::geometry::deform_as_rigid_as_possible(mesh_of(mesh), ids, positions, max_iter,
+                                                                    static_cast<o3d::geometry::ArapEnergy>(energy),
+                                                                    smoothed_alpha));
+    });
+}

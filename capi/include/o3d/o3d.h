@@ -20,6 +20,7 @@
 #include "o3d/rgbd.h"
 #include "o3d/trianglemesh.h"
 #include "o3d/tetramesh.h"
+#include "o3d/halfedgemesh.h"
 #include "o3d/boundingbox.h"
 #include "o3d/lineset.h"
 #include "o3d/voxelgrid.h"

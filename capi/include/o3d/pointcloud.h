@@ -909,11 +909,13 @@ O3D_API o3d_status o3d_planar_patch_options_init(o3d_planar_patch_options_t* opt
 /**
  * @brief Planar patches (Araujo & Oliveira 2020, Open3D's detect_planar_patches): an octree split by a
  * robust-statistics planarity test, then patches grown and merged; one oriented box per patch (column 2 of R the
- * patch normal), largest patch first. The cloud needs normals. Capacity and count are in boxes.
+ * patch normal), largest patch first. The cloud needs normals. Each box is written as 15 doubles in
+ * o3d_obb_t's field order (center, R row-major, extent), so a buffer of o3d_obb_t can receive them; capacity and
+ * count are in boxes.
  * @see PointCloud.detect_planar_patches
  *
  * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
- * @param out caller buffer of `capacity` boxes (NULL: only report the count)
+ * @param out caller buffer of `capacity` boxes of 15 doubles (NULL: only report the count)
  * @param capacity how many items the output buffer holds (ignored when it is NULL)
  * @param out_n receives the item count (always, also when the buffer is NULL or too small)
  * @param pc the point cloud (with normals)
@@ -922,7 +924,7 @@ O3D_API o3d_status o3d_planar_patch_options_init(o3d_planar_patch_options_t* opt
  *   cloud or one without normals, a non-finite point or normal, or an option out of range;
  *   O3D_ERROR_BUFFER_TOO_SMALL when `capacity` is short (the count is still reported).
  */
-O3D_API o3d_status o3d_pointcloud_detect_planar_patches(o3d_obb_t* out, size_t capacity, size_t* out_n,
+O3D_API o3d_status o3d_pointcloud_detect_planar_patches(double* out, size_t capacity, size_t* out_n,
                                                         const o3d_pointcloud_t* pc,
                                                         const o3d_planar_patch_options_t* opts);
 /**

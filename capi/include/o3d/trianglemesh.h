@@ -1254,6 +1254,39 @@ O3D_API o3d_status o3d_trianglemesh_create_from_oriented_bounding_ellipsoid(o3d_
                                                                             int32_t resolution, o3d_bool create_uv_map);
 
 
+/** The energy deform_as_rigid_as_possible minimises (O3D_ARAP_ENERGY_*; Open3D's DeformAsRigidAsPossibleEnergy). */
+typedef int32_t o3d_arap_energy;
+#define O3D_ARAP_ENERGY_SPOKES 0   /**< Sorkine & Alexa 2007: the spokes of each vertex's one-ring */
+#define O3D_ARAP_ENERGY_SMOOTHED 1 /**< Spokes plus the rotation smoothness of Levi & Gotsman 2015 */
+
+/**
+ * @brief As-rigid-as-possible deformation (Sorkine & Alexa 2007; Open3D's deform_as_rigid_as_possible): moves the
+ * constrained vertices to their positions and the others so that every one-ring turns as rigidly as it can, with
+ * cotangent weights, alternating `max_iter` times between fitting rotations and one sparse solve (factorised once).
+ * The new mesh holds the vertices and triangles only, as Open3D's. A connected part without a constraint keeps its
+ * place. @see TriangleMesh.deform_as_rigid_as_possible
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_trianglemesh_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param constraint_vertex_indices the constrained vertices (distinct, in range)
+ * @param constraint_vertex_positions their target positions, row-major num_constraints x 3 (finite)
+ * @param num_constraints number of constraints (>= 1)
+ * @param max_iter number of iterations (>= 0; 0 returns the input positions)
+ * @param energy O3D_ARAP_ENERGY_SPOKES or O3D_ARAP_ENERGY_SMOOTHED
+ * @param smoothed_alpha the weight of the smoothness term of O3D_ARAP_ENERGY_SMOOTHED (finite; Open3D: 0.01)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no constraints, a repeated or out-of-range
+ *   index, a non-finite position or vertex, a triangle index out of range, a negative `max_iter`, an unknown
+ *   energy or a non-finite `smoothed_alpha`.
+ */
+O3D_API o3d_status o3d_trianglemesh_deform_as_rigid_as_possible(o3d_trianglemesh_t** out,
+                                                                const o3d_trianglemesh_t* mesh,
+                                                                const int32_t* constraint_vertex_indices,
+                                                                const double* constraint_vertex_positions,
+                                                                size_t num_constraints, int32_t max_iter,
+                                                                o3d_arap_energy energy, double smoothed_alpha);
+
 O3D_END_DECL
 
 #endif /* O3D_TRIANGLEMESH_H */

@@ -16,6 +16,7 @@ O3D_BEGIN_DECL
 
 typedef struct o3d_camera_trajectory o3d_camera_trajectory_t; /**< opaque handle */
 typedef struct o3d_feature o3d_feature_t; /**< opaque handle */
+typedef struct o3d_halfedgemesh o3d_halfedgemesh_t; /**< opaque handle */
 typedef struct o3d_image o3d_image_t; /**< opaque handle */
 typedef struct o3d_index_lists o3d_index_lists_t; /**< opaque handle */
 typedef struct o3d_kdtree o3d_kdtree_t; /**< opaque handle */

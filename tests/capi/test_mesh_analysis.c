@@ -310,7 +310,7 @@ static void test_arap_reproduces_a_rigid_motion(void** state) {
         pos[3 * k + 2] = v[3 * i + 2] + t[2];
     }
     o3d_trianglemesh_t* out = NULL;
-    assert_int_equal(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, ids, pos, k, 50, O3D_ARAP_ENERGY_SPOKES,
+    assert_int_equal(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, ids, k, pos, k, 50, O3D_ARAP_ENERGY_SPOKES,
                                                                    0.01), O3D_OK);
     const double* w = NULL;
     size_t m = 0;
@@ -326,14 +326,16 @@ static void test_arap_reproduces_a_rigid_motion(void** state) {
     o3d_trianglemesh_destroy(out);
     /* Bad input: an index out of range, a repeated index, an unknown energy, no constraints. */
     int32_t bad_ids[2] = {0, (int32_t)n};
-    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, bad_ids, pos, 2, 5,
+    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, bad_ids, 2, pos, 2, 5,
                                                                   O3D_ARAP_ENERGY_SPOKES, 0.01), INV);
     assert_null(out);
     bad_ids[1] = 0;
-    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, bad_ids, pos, 2, 5,
+    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, bad_ids, 2, pos, 2, 5,
                                                                   O3D_ARAP_ENERGY_SPOKES, 0.01), INV);
-    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, ids, pos, k, 5, 7, 0.01), INV);
-    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, NULL, NULL, 0, 5,
+    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, ids, k, pos, k, 5, 7, 0.01), INV);
+    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, ids, k, pos, k - 1, 5,
+                                                                  O3D_ARAP_ENERGY_SPOKES, 0.01), INV);
+    O3D_ASSERT_FAILS(o3d_trianglemesh_deform_as_rigid_as_possible(&out, s, NULL, 0, NULL, 0, 5,
                                                                   O3D_ARAP_ENERGY_SMOOTHED, 0.01), INV);
     o3d_trianglemesh_destroy(s);
 }

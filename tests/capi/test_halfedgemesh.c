@@ -51,12 +51,14 @@ static void test_closed_mesh_half_edges(void** state) {
     o3d_index_lists_t* loops = NULL;
     size_t nl = 0, total = 0;
     assert_int_equal(o3d_halfedgemesh_get_boundaries(&loops, h), O3D_OK);
-    assert_int_equal(o3d_index_lists_counts(&nl, &total, loops), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_lists(&nl, loops), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_values(&total, loops), O3D_OK);
     assert_int_equal(nl, 0);
     o3d_index_lists_destroy(loops);
     o3d_index_lists_t* fans = NULL;
     assert_int_equal(o3d_halfedgemesh_get_ordered_half_edge_from_vertex(&fans, h), O3D_OK);
-    assert_int_equal(o3d_index_lists_counts(&nl, &total, fans), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_lists(&nl, fans), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_values(&total, fans), O3D_OK);
     assert_int_equal(nl, 12);
     assert_int_equal(total, 60); /* five outgoing half-edges per vertex */
     o3d_index_lists_destroy(fans);
@@ -110,7 +112,8 @@ static void test_open_grid_boundary(void** state) {
     o3d_index_lists_t* loops = NULL;
     assert_int_equal(o3d_halfedgemesh_get_boundaries(&loops, h), O3D_OK);
     size_t nl = 0, total = 0;
-    assert_int_equal(o3d_index_lists_counts(&nl, &total, loops), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_lists(&nl, loops), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_values(&total, loops), O3D_OK);
     assert_int_equal(nl, 1);
     assert_int_equal(total, 10);
     int32_t loop[10];

@@ -39,7 +39,8 @@ static o3d_trianglemesh_t* mesh_of(size_t nv, const int32_t* tris, size_t nt) {
 static void read_lists(const o3d_index_lists_t* lists, int64_t** offsets, size_t* n_lists, int32_t** values,
                        size_t* n_values) {
     size_t n = 0, total = 0;
-    assert_int_equal(o3d_index_lists_counts(&n, &total, lists), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_lists(&n, lists), O3D_OK);
+    assert_int_equal(o3d_index_lists_num_values(&total, lists), O3D_OK);
     *offsets = malloc((n + 1) * sizeof(int64_t));
     *values = malloc((total + 1) * sizeof(int32_t));
     size_t got = 0;
@@ -117,7 +118,8 @@ static void test_adjacency_list_bad_input(void** state) {
     O3D_ASSERT_FAILS(o3d_trianglemesh_compute_adjacency_list(NULL, m), INV);
     O3D_ASSERT_FAILS(o3d_trianglemesh_compute_adjacency_list(&adj, NULL), INV);
     size_t n = 0;
-    O3D_ASSERT_FAILS(o3d_index_lists_counts(&n, NULL, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_index_lists_num_lists(&n, NULL), INV);
+    O3D_ASSERT_FAILS(o3d_index_lists_num_values(NULL, NULL), INV);
     O3D_ASSERT_FAILS(o3d_index_lists_get_values(NULL, 0, NULL, NULL), INV);
     o3d_index_lists_destroy(NULL);
     o3d_trianglemesh_destroy(m);

@@ -20,7 +20,8 @@ namespace detail {
 inline IndexLists take_index_lists(o3d_index_lists_t* raw) {
     UniqueHandle<o3d_index_lists_t, &o3d_index_lists_destroy> owned(raw);
     size_t num_lists = 0, total = 0;
-    check(o3d_index_lists_counts(&num_lists, &total, owned.get()));
+    check(o3d_index_lists_num_lists(&num_lists, owned.get()));
+    check(o3d_index_lists_num_values(&total, owned.get()));
     std::vector<int64_t> offsets(num_lists + 1);
     std::vector<int32_t> values(total);
     size_t n = 0;

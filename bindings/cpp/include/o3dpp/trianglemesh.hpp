@@ -213,11 +213,10 @@ public:
                                              const std::vector<Vec3>& constraint_vertex_positions, int max_iter,
                                              DeformAsRigidAsPossibleEnergy energy = DeformAsRigidAsPossibleEnergy::Spokes,
                                              double smoothed_alpha = 0.01) const {
-        if (constraint_vertex_indices.size() != constraint_vertex_positions.size())
-            throw Error(O3D_ERROR_INVALID_ARGUMENT, "o3dpp: deform_as_rigid_as_possible needs one position per index");
         return derive(&o3d_trianglemesh_deform_as_rigid_as_possible, constraint_vertex_indices.data(),
+                      constraint_vertex_indices.size(),
                       constraint_vertex_positions.empty() ? nullptr : constraint_vertex_positions.front().data(),
-                      constraint_vertex_indices.size(), max_iter, static_cast<int32_t>(energy), smoothed_alpha);
+                      constraint_vertex_positions.size(), max_iter, static_cast<int32_t>(energy), smoothed_alpha);
     }
 
     /// @brief Convex hull of the vertices: {hull (outward triangles), per hull vertex the index of its vertex}.

@@ -80,29 +80,20 @@ impl TriangleMesh {
         energy: DeformAsRigidAsPossibleEnergy,
         smoothed_alpha: f64,
     ) -> Result<TriangleMesh> {
-        if constraint_vertex_indices.len() != constraint_vertex_positions.len() {
-            return Err(crate::Error::new(
-                crate::ErrorCode::InvalidArgument,
-                format!(
-                    "{} constraint indices but {} positions",
-                    constraint_vertex_indices.len(),
-                    constraint_vertex_positions.len()
-                ),
-            ));
-        }
         let ids = constraint_vertex_indices
             .iter()
             .map(|&i| to_i32(i, "constraint vertex index"))
             .collect::<Result<Vec<i32>>>()?;
         let max_iter = to_i32(max_iter, "max_iter")?;
-        // SAFETY: valid handle; `ids.len()` ints and as many rows of 3 contiguous doubles.
+        // SAFETY: valid handle; `ids.len()` ints; `constraint_vertex_positions.len()` rows of 3 contiguous doubles.
         new_mesh(|out| unsafe {
             sys::o3d_trianglemesh_deform_as_rigid_as_possible(
                 out,
                 self.as_raw(),
                 ids.as_ptr(),
-                constraint_vertex_positions.as_ptr().cast(),
                 ids.len(),
+                constraint_vertex_positions.as_ptr().cast(),
+                constraint_vertex_positions.len(),
                 max_iter,
                 energy.raw(),
                 smoothed_alpha,

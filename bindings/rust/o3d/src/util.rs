@@ -92,8 +92,10 @@ impl IndexLists {
     /// The lists, each a `Vec` (offsets and values copied once).
     pub(crate) fn to_vecs(&self) -> Result<Vec<Vec<i32>>> {
         let (mut num_lists, mut total) = (0usize, 0usize);
-        // SAFETY: the handle (or NULL, an error) and two out-pointers.
-        check(unsafe { sys::o3d_index_lists_counts(&mut num_lists, &mut total, self.0) })?;
+        // SAFETY: the handle (or NULL, an error) and out-pointers.
+        check(unsafe { sys::o3d_index_lists_num_lists(&mut num_lists, self.0) })?;
+        // SAFETY: as above.
+        check(unsafe { sys::o3d_index_lists_num_values(&mut total, self.0) })?;
         let mut offsets = vec![0i64; num_lists + 1];
         let mut values = vec![0i32; total];
         let mut n = 0usize;

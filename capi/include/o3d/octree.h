@@ -97,6 +97,60 @@ O3D_API o3d_status o3d_octree_locate_leaf_node(int32_t* out_found, o3d_octree_no
                                                double out_color[3], int32_t* out_indices, size_t capacity,
                                                size_t* out_n, const o3d_octree_t* octree, const double point[3]);
 
+/**
+ * @brief New empty octree of `max_depth` over the cube of edge `size` at `origin` (Open3D's
+ * Octree(max_depth, origin, size)).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_octree_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param max_depth the depth (1 to 21)
+ * @param origin the root cube's min corner
+ * @param size the root cube's edge (finite, > 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad depth, origin or size.
+ */
+O3D_API o3d_status o3d_octree_create_with_bounds(o3d_octree_t** out, int32_t max_depth, const double origin[3],
+                                                 double size);
+/**
+ * @brief Whether `point` lies in the half-open cube [origin, origin + size)^3 (Open3D's static
+ * Octree.is_point_in_bound).
+ *
+ * Threads: any thread.
+ * @param out receives 1 (true) or 0 (false)
+ * @param point the point
+ * @param origin the cube's min corner
+ * @param size the cube's edge
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_octree_is_point_in_bound(int32_t* out, const double point[3], const double origin[3],
+                                                double size);
+/**
+ * @brief Insert point number `index` with `color` into the leaf at max depth that holds `point`, creating the
+ * nodes on the way (Open3D's insert_point with OctreePointColorLeafNode leaves): the leaf keeps its indices
+ * ascending and unique and the mean color of its points. A point outside the root cube changes nothing.
+ *
+ * Threads: needs exclusive access to `octree`.
+ * @param out_inserted receives 1 (true) or 0 (false): whether the point was inside the root cube
+ * @param octree the octree
+ * @param point the point (finite)
+ * @param index the point's index (>= 0)
+ * @param color the point's color (finite)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a non-finite point or color, a negative index.
+ */
+O3D_API o3d_status o3d_octree_insert_point(int32_t* out_inserted, o3d_octree_t* octree, const double point[3],
+                                           int32_t index, const double color[3]);
+/**
+ * @brief Rebuild the octree from a voxel grid (Open3D's create_from_voxel_grid): the root at the grid's origin
+ * (lowered to the lowest index when some are negative) with the edge of the grid's largest extent, one leaf per
+ * voxel centre at the octree's max depth holding the voxel's color and its position in the grid's voxel order.
+ *
+ * Threads: needs exclusive access to `octree`; `grid` is only read.
+ * @param octree the octree (its max depth is kept)
+ * @param grid the voxel grid
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_octree_create_from_voxel_grid(o3d_octree_t* octree, const o3d_voxelgrid_t* grid);
+
 O3D_END_DECL
 
 #endif /* O3D_OCTREE_H */

@@ -15,6 +15,7 @@
 
 #include "o3d/common.h"
 #include "o3d/types.h"
+#include "o3d/camera.h"
 
 O3D_BEGIN_DECL
 
@@ -180,6 +181,130 @@ O3D_API o3d_status o3d_voxelgrid_get_voxel(int32_t out_index[3], const o3d_voxel
  */
 O3D_API o3d_status o3d_voxelgrid_check_if_included(int32_t* out_included, size_t capacity, size_t* out_n,
                                                    const o3d_voxelgrid_t* grid, const double* xyz, size_t n);
+
+/* ---- Editing, dense grids, carving (Open3D's VoxelGrid) ---- */
+
+/**
+ * @brief A dense grid of round(width / voxel_size) x round(height / voxel_size) x round(depth / voxel_size) voxels of
+ * one color, voxel (0, 0, 0) starting at `origin` (Open3D's VoxelGrid.create_dense).
+ *
+ * Threads: any thread.
+ * Ownership: `*out` is the caller's, to free with o3d_voxelgrid_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param origin the grid's origin
+ * @param color every voxel's color
+ * @param voxel_size the voxel edge (finite, > 0)
+ * @param width extent along x (finite, >= 0)
+ * @param height extent along y (finite, >= 0)
+ * @param depth extent along z (finite, >= 0)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad size or extent, or more than 2^31 voxels
+ *   (checked before allocating).
+ */
+O3D_API o3d_status o3d_voxelgrid_create_dense(o3d_voxelgrid_t** out, const double origin[3], const double color[3],
+                                              double voxel_size, double width, double height, double depth);
+/**
+ * @brief Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's
+ * VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_voxelgrid_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param mesh the mesh
+ * @param voxel_size the voxel edge (finite, > 0)
+ * @param min_bound the grid's origin
+ * @param max_bound the far corner (>= min_bound)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, a bad size or bounds, a triangle index out of
+ *   range or a non-finite vertex.
+ */
+O3D_API o3d_status o3d_voxelgrid_create_from_triangle_mesh_within_bounds(o3d_voxelgrid_t** out,
+                                                                         const o3d_trianglemesh_t* mesh,
+                                                                         double voxel_size, const double min_bound[3],
+                                                                         const double max_bound[3]);
+/**
+ * @brief Add the voxel at `grid_index` with `color`, replacing one already there (Open3D's add_voxel).
+ *
+ * Threads: needs exclusive access to `grid`.
+ * @param grid the voxel grid
+ * @param grid_index the voxel's (i, j, k)
+ * @param color its color
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a non-finite color.
+ */
+O3D_API o3d_status o3d_voxelgrid_add_voxel(o3d_voxelgrid_t* grid, const int32_t grid_index[3], const double color[3]);
+/**
+ * @brief Remove the voxel at `grid_index`; nothing happens when there is none (Open3D's remove_voxel).
+ *
+ * Threads: needs exclusive access to `grid`.
+ * @param grid the voxel grid
+ * @param grid_index the voxel's (i, j, k)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_voxelgrid_remove_voxel(o3d_voxelgrid_t* grid, const int32_t grid_index[3]);
+/**
+ * @brief The centre of cell `grid_index`, occupied or not (Open3D's get_voxel_center_coordinate).
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the centre
+ * @param grid the voxel grid
+ * @param grid_index the cell's (i, j, k)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_voxelgrid_get_voxel_center_coordinate(double out[3], const o3d_voxelgrid_t* grid,
+                                                             const int32_t grid_index[3]);
+/**
+ * @brief The 8 corners of cell `grid_index` (row-major 8 x 3) in Open3D's get_voxel_bounding_points order.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the 8 corners, row-major 8 x 3
+ * @param grid the voxel grid
+ * @param grid_index the cell's (i, j, k)
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_voxelgrid_get_voxel_bounding_points(double out[24], const o3d_voxelgrid_t* grid,
+                                                           const int32_t grid_index[3]);
+/**
+ * @brief Space carving with a depth map (Open3D's carve_depth_map): each voxel's 8 corners are projected through
+ * the camera; a voxel stays when a corner inside the image lies on or behind the observed depth (depth > 0), or,
+ * with `keep_voxels_outside_image`, when a corner falls outside the image; the others are removed.
+ *
+ * Threads: needs exclusive access to `grid`; the other inputs are only read.
+ * @param grid the voxel grid
+ * @param depth a 1-channel float32 depth image in metres, of the intrinsic's size
+ * @param intrinsic the camera intrinsic
+ * @param extrinsic the world-to-camera transform, row-major 4x4 (rigid)
+ * @param keep_voxels_outside_image whether voxels seen outside the image stay
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an image of another format or size, a bad
+ *   intrinsic or extrinsic.
+ */
+O3D_API o3d_status o3d_voxelgrid_carve_depth_map(o3d_voxelgrid_t* grid, const o3d_image_t* depth,
+                                                 const o3d_pinhole_intrinsic_t* intrinsic, const double extrinsic[16],
+                                                 o3d_bool keep_voxels_outside_image);
+/**
+ * @brief Space carving with a silhouette mask (Open3D's carve_silhouette): as o3d_voxelgrid_carve_depth_map, a
+ * voxel staying when a corner inside the image falls on the mask (value > 0).
+ *
+ * Threads: needs exclusive access to `grid`; the other inputs are only read.
+ * @param grid the voxel grid
+ * @param mask a 1-channel float32 mask, of the intrinsic's size
+ * @param intrinsic the camera intrinsic
+ * @param extrinsic the world-to-camera transform, row-major 4x4 (rigid)
+ * @param keep_voxels_outside_image whether voxels seen outside the image stay
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, an image of another format or size, a bad
+ *   intrinsic or extrinsic.
+ */
+O3D_API o3d_status o3d_voxelgrid_carve_silhouette(o3d_voxelgrid_t* grid, const o3d_image_t* mask,
+                                                  const o3d_pinhole_intrinsic_t* intrinsic, const double extrinsic[16],
+                                                  o3d_bool keep_voxels_outside_image);
+/**
+ * @brief The voxel grid of an octree's leaves (Open3D's Octree.to_voxel_grid): voxel size = size / 2^max_depth,
+ * origin at the octree's origin, one voxel per leaf with the leaf's color.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * Ownership: `*out` is the caller's, to free with o3d_voxelgrid_destroy(); left NULL on failure.
+ * @param out receives the new handle (NULL on failure)
+ * @param octree the octree
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_voxelgrid_create_from_octree(o3d_voxelgrid_t** out, const o3d_octree_t* octree);
 
 O3D_END_DECL
 

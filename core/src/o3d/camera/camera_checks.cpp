@@ -25,6 +25,14 @@ void require_rigid_layout(const Eigen::Matrix4d& m, const char* what) {
         throw InvalidArgument(std::string(what) + ": last row must be (0, 0, 0, 1)");
 }
 
+void require_rigid(const Eigen::Matrix4d& m, const char* what) {
+    require_rigid_layout(m, what);
+    const Eigen::Matrix3d r = m.block<3, 3>(0, 0);
+    // 1e-6: rotations written with 7 significant digits (trajectory files) still pass; a scale of 1.00001 does not.
+    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-6 || r.determinant() < 0.0)
+        throw InvalidArgument(std::string(what) + ": the upper-left 3x3 block must be a rotation (rigid motion)");
+}
+
 Eigen::Matrix4d checked_inverse(const Eigen::Matrix4d& m, const char* what) {
     if (!m.allFinite()) throw InvalidArgument(std::string(what) + ": matrix has a NaN or infinite entry");
     Eigen::Matrix4d inverse;

@@ -31,7 +31,7 @@ void check_carving_input(const VoxelGrid& grid, const Image& image, const camera
                                    std::to_string(params.intrinsic.width) + " x " +
                                    std::to_string(params.intrinsic.height));
     camera::require_projectable_intrinsic(params.intrinsic, "the camera intrinsic");
-    camera::require_rigid_layout(params.extrinsic, "the camera extrinsic");
+    camera::require_rigid(params.extrinsic, "the camera extrinsic");
     if (!(grid.voxel_size > 0.0) || !std::isfinite(grid.voxel_size))
         throw o3d::InvalidArgument("the voxel grid's voxel_size must be finite and > 0");
     if (!grid.origin.allFinite()) throw o3d::InvalidArgument("the voxel grid's origin is not finite");

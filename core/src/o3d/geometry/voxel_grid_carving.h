@@ -26,8 +26,8 @@ namespace o3d::geometry {
 /// as outside the image (Open3D divides by z regardless). `num_threads`: 0 = the library default; the
 /// result does not depend on it. Throws InvalidArgument for an image that is not 1-channel float32, empty,
 /// whose data size is not width x height x 4 bytes, or whose size differs from the intrinsic's; for
-/// non-finite intrinsics or zero focal lengths; for an extrinsic that is not finite with last row
-/// (0, 0, 0, 1); for a grid whose voxel_size is not finite and > 0 or whose origin is not finite.
+/// non-finite intrinsics or zero focal lengths; for an extrinsic that is not a rigid motion (finite, last row
+/// (0, 0, 0, 1), a rotation block); for a grid whose voxel_size is not finite and > 0 or whose origin is not finite.
 void carve_depth_map(VoxelGrid& grid, const Image& depth, const camera::PinholeCameraParameters& params,
                      bool keep_voxels_outside_image = false, int num_threads = 0);
 

@@ -99,7 +99,7 @@ OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3,
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
 ROW_WIDTH = {"xyz": 3, "constraint_vertex_positions": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
 # int32 outputs that are flags (besides an `_is_` / `has_` function's).
-BOOL_OUTS = {"out_found", "out_open", "out_success"}
+BOOL_OUTS = {"out_found", "out_open", "out_success", "out_inserted"}
 SCALARS = {"size_t": "size_t", "int32_t": "int32_t", "double": "double", "int64_t": "int64_t", "uint64_t": "uint64_t"}
 ELEM = {"double": "f64", "float": "f32", "int32_t": "i32", "int64_t": "i64", "uint8_t": "u8"}
 

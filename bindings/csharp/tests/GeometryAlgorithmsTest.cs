@@ -203,5 +203,62 @@ static partial class Test
             using (var fin = MeshOf(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 }, new[] { 0, 1, 2, 1, 0, 3, 0, 1, 4 }))
                 ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => HalfEdgeTriangleMesh.CreateFromTriangleMesh(fin), "non-manifold input");
         });
+
+        Run("voxel grids: dense grids, edits, cell geometry, carving; octrees from points and to and from voxel grids", () =>
+        {
+            using (var g = VoxelGrid.CreateDense(new[] { 1.0, 2, 3 }, new[] { 1.0, 0, 0 }, 0.25, 1.0, 0.5, 0.25))
+            {
+                Check(g.NumVoxels() == 8, "4 x 2 x 1 voxels");
+                var c = g.GetVoxelCenterCoordinate(new[] { 3, 1, 0 });
+                AllNear(c, new[] { 1.875, 2.375, 3.125 }, 1e-12, "centre of (3, 1, 0)");
+                var corners = g.GetVoxelBoundingPoints(new[] { 3, 1, 0 });
+                for (int k = 0; k < 24; k++) Near(Math.Abs(corners[k] - c[k % 3]), 0.125, 1e-12, "corner " + k / 3);
+                g.AddVoxel(new[] { -1, 0, 0 }, new[] { 0.0, 0, 1 });
+                Check(g.NumVoxels() == 9, "a new voxel");
+                g.AddVoxel(new[] { 0, 0, 0 }, new[] { 0.0, 1, 0 });
+                Check(g.NumVoxels() == 9, "an existing voxel recoloured");
+                g.RemoveVoxel(new[] { -1, 0, 0 });
+                g.RemoveVoxel(new[] { 9, 9, 9 });
+                Check(g.NumVoxels() == 8, "one removed, a missing one ignored");
+                ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => g.AddVoxel(new[] { 0, 0 }, new[] { 0.0, 1, 0 }), "a short index");
+            }
+            ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => VoxelGrid.CreateDense(new double[3], new double[3], 0.0, 1, 1, 1), "voxel size 0");
+            // Carving a 10^3 cube in front of a 64 x 64 camera: an all-ones mask keeps it, an all-zeros mask removes it.
+            using (var cube = VoxelGrid.CreateDense(new[] { -0.5, -0.5, 2.5 }, new[] { 1.0, 1, 1 }, 0.1, 1, 1, 1))
+            using (var k = new PinholeCameraIntrinsic { Width = 64, Height = 64, Fx = 50, Fy = 50, Cx = 31.5, Cy = 31.5 })
+            {
+                var ones = new byte[64 * 64 * 4];
+                for (int i = 0; i < 64 * 64; i++) BitConverter.GetBytes(1.0f).CopyTo(ones, 4 * i);
+                var identity = new double[] { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+                using (var mask = Image.CreateFromData(64, 64, 1, 4, ones))
+                {
+                    cube.CarveSilhouette(mask, k, identity, 0);
+                    Check(cube.NumVoxels() == 1000, "an all-ones mask keeps every voxel");
+                    var scaled = (double[])identity.Clone(); scaled[0] = 2;
+                    ThrowsStatus(Library.ERROR_INVALID_ARGUMENT, () => cube.CarveDepthMap(mask, k, scaled, 0), "a non-rigid extrinsic");
+                }
+                using (var zeros = Image.CreateFromData(64, 64, 1, 4, new byte[64 * 64 * 4]))
+                {
+                    cube.CarveSilhouette(zeros, k, identity, 0);
+                    Check(cube.NumVoxels() == 0, "an all-zeros mask removes every voxel");
+                }
+            }
+            using (var tree = Octree.CreateWithBounds(3, new[] { 0.0, 0, 0 }, 8.0))
+            {
+                Check(tree.InsertPoint(new[] { 0.5, 0.5, 0.5 }, 0, new[] { 1.0, 0, 0 }), "inside");
+                Check(tree.InsertPoint(new[] { 0.7, 0.2, 0.9 }, 1, new[] { 0.0, 0, 1 }), "inside, same leaf");
+                Check(tree.InsertPoint(new[] { 7.5, 3.5, 1.5 }, 2, new[] { 0.0, 1, 0 }), "inside");
+                Check(!tree.InsertPoint(new[] { 8.0, 1, 1 }, 3, new[] { 0.0, 1, 0 }), "outside the half-open cube");
+                Check(tree.NumLeafNodes() == 2, "two leaves");
+                Check(Octree.IsPointInBound(new[] { 7.9, 0, 0 }, new[] { 0.0, 0, 0 }, 8) && !Octree.IsPointInBound(new[] { 8.0, 0, 0 }, new[] { 0.0, 0, 0 }, 8), "half-open bounds");
+                using (var grid = VoxelGrid.CreateFromOctree(tree))
+                using (var back = Octree.Create(3))
+                {
+                    Check(grid.NumVoxels() == 2 && grid.GetVoxelSize() == 1.0, "unit voxels, one per leaf");
+                    back.CreateFromVoxelGrid(grid);
+                    Check(back.NumLeafNodes() == 2, "back to two leaves");
+                }
+            }
+        });
     }
 }

@@ -230,4 +230,63 @@ class GeometryAlgorithmsTest {
             assertInvalid(() -> HalfEdgeTriangleMesh.createFromTriangleMesh(fin));
         }
     }
+
+    @Test
+    void voxelGridsAndOctrees() {
+        try (VoxelGrid g = VoxelGrid.createDense(new double[] {1, 2, 3}, new double[] {1, 0, 0}, 0.25, 1.0, 0.5, 0.25)) {
+            assertEquals(8, g.numVoxels());
+            double[] c = g.getVoxelCenterCoordinate(new int[] {3, 1, 0});
+            assertArrayEquals(new double[] {1.875, 2.375, 3.125}, c, 1e-12);
+            double[] corners = g.getVoxelBoundingPoints(new int[] {3, 1, 0});
+            for (int k = 0; k < 24; k++) assertEquals(0.125, Math.abs(corners[k] - c[k % 3]), 1e-12);
+            g.addVoxel(new int[] {-1, 0, 0}, new double[] {0, 0, 1});
+            assertEquals(9, g.numVoxels());
+            g.addVoxel(new int[] {0, 0, 0}, new double[] {0, 1, 0});
+            assertEquals(9, g.numVoxels());
+            g.removeVoxel(new int[] {-1, 0, 0});
+            g.removeVoxel(new int[] {9, 9, 9});
+            assertEquals(8, g.numVoxels());
+            assertInvalid(() -> g.addVoxel(new int[] {0, 0}, new double[] {0, 1, 0}));
+        }
+        assertInvalid(() -> VoxelGrid.createDense(new double[3], new double[3], 0.0, 1, 1, 1));
+        double[] identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        try (VoxelGrid cube = VoxelGrid.createDense(new double[] {-0.5, -0.5, 2.5}, new double[] {1, 1, 1}, 0.1, 1, 1, 1);
+                PinholeCameraIntrinsic k = new PinholeCameraIntrinsic()) {
+            k.setWidth(64);
+            k.setHeight(64);
+            k.setFx(50);
+            k.setFy(50);
+            k.setCx(31.5);
+            k.setCy(31.5);
+            java.nio.ByteBuffer ones = java.nio.ByteBuffer.allocate(64 * 64 * 4).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            for (int i = 0; i < 64 * 64; i++) ones.putFloat(1.0f);
+            try (Image mask = Image.createFromData(64, 64, 1, 4, ones.array())) {
+                cube.carveSilhouette(mask, k, identity, 0);
+                assertEquals(1000, cube.numVoxels());
+                double[] scaled = identity.clone();
+                scaled[0] = 2;
+                assertInvalid(() -> cube.carveDepthMap(mask, k, scaled, 0));
+            }
+            try (Image zeros = Image.createFromData(64, 64, 1, 4, new byte[64 * 64 * 4])) {
+                cube.carveSilhouette(zeros, k, identity, 0);
+                assertEquals(0, cube.numVoxels());
+            }
+        }
+        try (Octree tree = Octree.createWithBounds(3, new double[] {0, 0, 0}, 8.0)) {
+            assertTrue(tree.insertPoint(new double[] {0.5, 0.5, 0.5}, 0, new double[] {1, 0, 0}));
+            assertTrue(tree.insertPoint(new double[] {0.7, 0.2, 0.9}, 1, new double[] {0, 0, 1}));
+            assertTrue(tree.insertPoint(new double[] {7.5, 3.5, 1.5}, 2, new double[] {0, 1, 0}));
+            assertFalse(tree.insertPoint(new double[] {8.0, 1, 1}, 3, new double[] {0, 1, 0}));
+            assertEquals(2, tree.numLeafNodes());
+            assertTrue(Octree.isPointInBound(new double[] {7.9, 0, 0}, new double[] {0, 0, 0}, 8));
+            assertFalse(Octree.isPointInBound(new double[] {8.0, 0, 0}, new double[] {0, 0, 0}, 8));
+            try (VoxelGrid grid = VoxelGrid.createFromOctree(tree);
+                    Octree back = Octree.create(3)) {
+                assertEquals(2, grid.numVoxels());
+                assertEquals(1.0, grid.getVoxelSize());
+                back.createFromVoxelGrid(grid);
+                assertEquals(2, back.numLeafNodes());
+            }
+        }
+    }
 }

@@ -64,36 +64,41 @@ VARIANTS = {  # every language
     "O3D_COLOR_OPTION_Y": "YCoordinate", "O3D_COLOR_OPTION_Z": "ZCoordinate", "O3D_KERNEL_GM": "GM",
 }
 CPP_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_robust_kernel": "RobustKernelType",
-             "o3d_tsdf_volume_color_type": "TSDFVolumeColorType", "o3d_tetramesh_array": "TetraMeshArray"}
+             "o3d_tsdf_volume_color_type": "TSDFVolumeColorType", "o3d_tetramesh_array": "TetraMeshArray",
+             "o3d_halfedgemesh_array": "HalfEdgeTriangleMeshArray", "o3d_arap_energy": "DeformAsRigidAsPossibleEnergy"}
 CPP_VARIANTS = {"O3D_VOXELGRID_GRID_INDEX": "GridIndices", "O3D_TSDF_VOLUME_COLOR_TYPE_RGB8": "RGB8"}
 # C++ structs written by hand on the generated detail::<Name>Base (extra constructors, methods).
 CPP_EXTENDED = {"o3d_search_param_t", "o3d_pose_graph_edge_t", "o3d_render_option_t", "o3d_render_material_t"}
 # Several C fields shown as one value: (struct, first field) -> (type, {C field: member path}).
 # (Its header is in CPP_INCLUDES.)
-CPP_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", {"kernel": "kernel.type", "kernel_k": "kernel.k"})}
+CPP_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", {"kernel": "kernel.type", "kernel_k": "kernel.k"}),
+                  # (SearchParam derives from this base, which converts to it and back)
+                  ("o3d_planar_patch_options_t", "search_param"): ("SearchParamBase", {"search_param": "search_param"})}
 CPP_INCLUDES = ["o3dpp/common.hpp", "o3dpp/options.hpp", "o3dpp/robust_kernel.hpp", "o3dpp/span.hpp"]
 
 RUST_TYPES = {"o3d_image_filter_type": "ImageFilter", "o3d_image_convert": "ConvertType",
-              "o3d_tsdf_volume_color_type": "TSDFVolumeColorType"}
+              "o3d_tsdf_volume_color_type": "TSDFVolumeColorType", "o3d_arap_energy": "DeformAsRigidAsPossibleEnergy"}
 # Data-carrying enums or named accessors instead: RobustKernel { k }, SearchParam, CorrespondenceChecker(t),
 # points()/colors()/...; create_mobius edits the raw struct.
 RUST_SKIP = {"o3d_search_kind", "o3d_robust_kernel", "o3d_correspondence_checker_kind", "o3d_pointcloud_array",
              "o3d_lineset_array", "o3d_feature_array", "o3d_image_array", "o3d_voxelgrid_array",
-             "o3d_search_param_t", "o3d_mobius_options_t", "o3d_tetramesh_array"}
+             "o3d_search_param_t", "o3d_mobius_options_t", "o3d_tetramesh_array",
+             "o3d_halfedgemesh_array"}
 RUST_MODULES = {  # default: the header's name (common.h -> lib)
     "o3d_mesh_read_options_t": "io_geometry", "o3d_mesh_write_options_t": "io_geometry",
     "o3d_depth_to_cloud_options_t": "rgbd", "o3d_ransac_options_t": "registration_global",
     "o3d_fgr_options_t": "registration_global", "o3d_simplification_contraction": "trianglemesh_ops",
-    "o3d_filter_scope": "trianglemesh_ops", "o3d_trianglemesh_t": "trianglemesh_ops",
+    "o3d_filter_scope": "trianglemesh_ops", "o3d_trianglemesh_t": "trianglemesh_ops", "o3d_arap_energy": "trianglemesh_ops",
     "o3d_iss_options_t": "keypoint", "o3d_poisson_options_t": "surface_reconstruction",
 }
 RUST_SUBSETS = {"o3d_mesh_array": (("O3D_MESH_VERTICES", "O3D_MESH_VERTEX_NORMALS", "O3D_MESH_VERTEX_COLORS",
                                     "O3D_MESH_TRIANGLE_NORMALS"), "the float64 ones with three values per row")}
 RUST_DEFAULTS = {"o3d_render_backend": "O3D_RENDER_BACKEND_AUTO", "o3d_image_convert": "O3D_IMAGE_CONVERT_WEIGHTED",
                  "o3d_filter_scope": "O3D_FILTER_SCOPE_ALL", "o3d_simplification_contraction": "O3D_SIMPLIFICATION_AVERAGE",
-                 "o3d_odometry_jacobian": "O3D_ODOMETRY_JACOBIAN_COLOR_TERM"}
+                 "o3d_odometry_jacobian": "O3D_ODOMETRY_JACOBIAN_COLOR_TERM", "o3d_arap_energy": "O3D_ARAP_ENERGY_SPOKES"}
 RUST_ORDERED = {"o3d_log_level"}
-RUST_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", ("kernel", "kernel_k"))}
+RUST_COMPOSITES = {("o3d_icp_options_t", "kernel"): ("RobustKernel", ("kernel", "kernel_k")),
+                   ("o3d_planar_patch_options_t", "search_param"): ("SearchParam", ("search_param",))}
 
 # Python: the groups bound as py::enum_, as [(C++ type, Python name)] (default: one, named after the typedef).
 PY_ENUMS = {
@@ -241,6 +246,15 @@ CPP_METHODS = {
     **{f"o3d_feature_{c}": (None, {}) for c in ("dimension", "num", "resize")},
     "o3d_rgbd_image_create_from_dataset_format": (None, {"convert_rgb_to_intensity": "true"}),
     "o3d_rgbd_image_get_color": ("color", {}), "o3d_rgbd_image_get_depth": ("depth", {}),
+    "o3d_pointcloud_smooth_laplacian": (None, {"iterations": "10", "lambda": "0.5", "knn": "20",
+                                               "use_fixed_neighborhoods": "false"}),
+    "o3d_pointcloud_smooth_taubin": (None, {"iterations": "10", "lambda": "0.5", "mu": "-0.53", "knn": "20",
+                                            "use_fixed_neighborhoods": "false"}),
+    "o3d_trianglemesh_is_intersecting": (None, {}), "o3d_trianglemesh_orient_triangles": (None, {}),
+    "o3d_trianglemesh_filter_sharpen": (None, {"number_of_iterations": "1", "strength": "1.0",
+                                               "filter_scope": "FilterScope::All"}),
+    "o3d_trianglemesh_create_ellipsoid": (None, {"radius_x": "1.0", "radius_y": "1.0", "radius_z": "1.0",
+                                                 "resolution": "20", "create_uv_map": "false"}),
 }
 # handle -> (class, the header of its generated base, the class's status check: done, or ran where callbacks run,
 # the headers the base needs)
@@ -323,6 +337,8 @@ RUST_METHODS = {
     "o3d_tsdf_volume_create_uniform": "new_uniform", "o3d_tsdf_volume_create_scalable": "new_scalable",
     **{f"o3d_tsdf_volume_{c}": None for c in TSDF_CALLS},
     **{f"o3d_tsdf_volume_get_{c}": c for c in TSDF_PROPERTIES},
+    "o3d_pointcloud_smooth_laplacian": None, "o3d_pointcloud_smooth_taubin": None,
+    **{f"o3d_trianglemesh_{n}": None for n in ("is_intersecting", "orient_triangles", "filter_sharpen", "create_ellipsoid")},
 }
 # int32_t parameters Rust takes as usize (counts of iterations, segments), converted by crate::util::to_i32: a value
 # over i32::MAX is an InvalidArgument error naming the parameter. (Parameters typed o3d_count need no entry.)

@@ -37,6 +37,7 @@ CLASS_NAMES = {  # C type -> class name (default: CamelCase of the noun)
     "o3d_obb_t": "OrientedBoundingBox", "o3d_pinhole_intrinsic_t": "PinholeCameraIntrinsic",
     "o3d_camera_trajectory_t": "PinholeCameraTrajectory", "o3d_icp_options_t": "IcpOptions",
     "o3d_fgr_options_t": "FgrOptions", "o3d_rgbd_options_t": "RgbdOptions", "o3d_tetramesh_t": "TetraMesh",
+    "o3d_obe_t": "OrientedBoundingEllipsoid", "o3d_halfedgemesh_t": "HalfEdgeTriangleMesh",
 }
 # Callbacks are hand-written (o3d.i). Views (`T** out_data` + row counts) become o3dx_view results: a
 # borrowed address, rows and bytes (C#: struct View; Java: a direct ByteBuffer), valid until the owner changes.
@@ -96,7 +97,7 @@ OUT_WIDTH = {"o3d_selection_polygon_volume_get_bounding_polygon": 3,
              "o3d_pointcloud_estimate_point_covariances": 9, "o3d_pointcloud_detect_planar_patches": 15, "o3d_tsdf_volume_extract_volume_tsdf": 2,
              "o3d_tsdf_volume_extract_volume_color": 3}
 # Row width of array inputs followed by a count (default 1); `data` of set_array comes from array_shape.
-ROW_WIDTH = {"xyz": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
+ROW_WIDTH = {"xyz": 3, "constraint_vertex_positions": 3, "queries": 3, "corres": 2, "pairs": 2, "corners": 3}
 # int32 outputs that are flags (besides an `_is_` / `has_` function's).
 BOOL_OUTS = {"out_found", "out_open", "out_success"}
 SCALARS = {"size_t": "size_t", "int32_t": "int32_t", "double": "double", "int64_t": "int64_t", "uint64_t": "uint64_t"}
@@ -262,7 +263,8 @@ class Gen:
             arrays, counts = group
             width = OUT_WIDTH.get(f["name"], 2 if f["name"] in PAIRS else 1)
             cap = CAPACITY.get(f["name"])
-            if verb in ("get_array", "get_index_array"):
+            shaped = verb in ("get_array", "get_index_array") and f"o3d_{noun}_array_shape" in self.fnames
+            if shaped:
                 lines.append(f"size_t rows_ = 0, cols_ = 0;")
                 body.append(f"O3DX_CHECK(o3d_{noun}_array_shape(&rows_, &cols_, $self, which));")
                 cap, width = "rows_", "cols_"
@@ -289,7 +291,8 @@ class Gen:
         body.append(f"O3DX_CHECK({f['name']}({', '.join(args)}));")
         if group:
             arrays, counts = group
-            width = ("cols_" if verb in ("get_array", "get_index_array")
+            shaped = verb in ("get_array", "get_index_array") and f"o3d_{noun}_array_shape" in self.fnames
+            width = ("cols_" if shaped
                      else OUT_WIDTH.get(f["name"], 2 if f["name"] in PAIRS else 1))
             for k, a in enumerate(arrays):
                 field = self.field_name(a["name"], a["type"].rstrip("*"))

@@ -40,11 +40,17 @@ o3d_index_lists_t* make_index_lists(const std::vector<int>& offsets, const std::
 
 O3D_API void o3d_index_lists_destroy(o3d_index_lists_t* lists) { delete lists; }
 
-O3D_API o3d_status o3d_index_lists_counts(size_t* out_num_lists, size_t* out_total, const o3d_index_lists_t* lists) {
+O3D_API o3d_status o3d_index_lists_num_lists(size_t* out, const o3d_index_lists_t* lists) {
     return guard(__func__, [&] {
-        require(lists, "lists");
-        if (out_num_lists) *out_num_lists = lists->offsets.size() - 1;
-        if (out_total) *out_total = lists->values.size();
+        require(out, "out");
+        *out = require(lists, "lists")->offsets.size() - 1;
+    });
+}
+
+O3D_API o3d_status o3d_index_lists_num_values(size_t* out, const o3d_index_lists_t* lists) {
+    return guard(__func__, [&] {
+        require(out, "out");
+        *out = require(lists, "lists")->values.size();
     });
 }
 

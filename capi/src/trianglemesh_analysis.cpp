@@ -75,10 +75,10 @@ O3D_API o3d_status o3d_trianglemesh_is_intersecting(int32_t* out, const o3d_tria
     });
 }
 
-O3D_API o3d_status o3d_trianglemesh_orient_triangles(int32_t* out, o3d_trianglemesh_t* mesh) {
+O3D_API o3d_status o3d_trianglemesh_orient_triangles(int32_t* out_success, o3d_trianglemesh_t* mesh) {
     return guard(__func__, [&] {
-        require(out, "out");
-        *out = o3d::geometry::orient_triangles(require(mesh, "mesh")->mesh) ? 1 : 0;
+        require(out_success, "out_success");
+        *out_success = o3d::geometry::orient_triangles(require(mesh, "mesh")->mesh) ? 1 : 0;
     });
 }
 

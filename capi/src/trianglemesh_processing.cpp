@@ -167,11 +167,16 @@ O3D_API o3d_status o3d_trianglemesh_crop_aabb(o3d_trianglemesh_t** out, const o3
 O3D_API o3d_status o3d_trianglemesh_deform_as_rigid_as_possible(o3d_trianglemesh_t** out,
                                                                 const o3d_trianglemesh_t* mesh,
                                                                 const int32_t* constraint_vertex_indices,
+                                                                size_t num_indices,
                                                                 const double* constraint_vertex_positions,
-                                                                size_t num_constraints, int32_t max_iter,
+                                                                size_t num_positions, int32_t max_iter,
                                                                 o3d_arap_energy energy, double smoothed_alpha) {
     return guard(__func__, [&] {
         require_out(out);
+        if (num_indices != num_positions)
+            throw o3d::InvalidArgument(std::to_string(num_indices) + " constraint indices but " +
+                                       std::to_string(num_positions) + " positions");
+        const size_t num_constraints = num_indices;
         if (num_constraints > 0) {
             require(constraint_vertex_indices, "constraint_vertex_indices");
             require(constraint_vertex_positions, "constraint_vertex_positions");

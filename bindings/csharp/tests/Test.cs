@@ -304,6 +304,7 @@ static partial class Test
         ColorMapTests(); // ColorMapTest.cs
         ReconstructionTests(); // ReconstructionTest.cs
         SurfaceReconstructionTests(); // SurfaceReconstructionTest.cs
+        GeometryAlgorithmsTests(); // GeometryAlgorithmsTest.cs
         if (skipped > 0) Console.WriteLine("(" + skipped + " skipped)");
         Console.WriteLine(passed + " passed, " + failed + " failed");
         return failed == 0 ? 0 : 1;

@@ -27,15 +27,23 @@ O3D_BEGIN_DECL
  */
 O3D_API void o3d_index_lists_destroy(o3d_index_lists_t* lists);
 /**
- * @brief Number of lists, and total number of values over all lists.
+ * @brief Number of lists.
  *
  * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
- * @param out_num_lists receives the number of lists (may be NULL)
- * @param out_total receives the total number of values (may be NULL)
+ * @param out receives the number of lists
  * @param lists the lists
- * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL `lists`.
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
  */
-O3D_API o3d_status o3d_index_lists_counts(size_t* out_num_lists, size_t* out_total, const o3d_index_lists_t* lists);
+O3D_API o3d_status o3d_index_lists_num_lists(size_t* out, const o3d_index_lists_t* lists);
+/**
+ * @brief Total number of values over all lists.
+ *
+ * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
+ * @param out receives the number of values
+ * @param lists the lists
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer.
+ */
+O3D_API o3d_status o3d_index_lists_num_values(size_t* out, const o3d_index_lists_t* lists);
 /**
  * @brief Copy the offsets (num_lists + 1 values, the first 0) into `out`, which holds `capacity` values;
  * `*out_n` always gets the count. `out` NULL only reports it.

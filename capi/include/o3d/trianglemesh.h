@@ -1156,11 +1156,11 @@ O3D_API o3d_status o3d_trianglemesh_is_intersecting(int32_t* out, const o3d_tria
  * left unchanged and gives 0.
  *
  * Threads: needs exclusive access to `mesh`.
- * @param out receives 1 (true) or 0 (false): whether the mesh is now consistently oriented
+ * @param out_success receives 1 (true) or 0 (false): whether the mesh is now consistently oriented
  * @param mesh the mesh
  * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer or a triangle index out of range.
  */
-O3D_API o3d_status o3d_trianglemesh_orient_triangles(int32_t* out, o3d_trianglemesh_t* mesh);
+O3D_API o3d_status o3d_trianglemesh_orient_triangles(int32_t* out_success, o3d_trianglemesh_t* mesh);
 /**
  * @brief Sharpening: `number_of_iterations` times, v += strength * sum over its neighbours (v - neighbour), for
  * the attributes `filter_scope` selects (Open3D's filter_sharpen; colors are not clamped, as there). Otherwise as
@@ -1271,20 +1271,22 @@ typedef int32_t o3d_arap_energy;
  * @param out receives the new handle (NULL on failure)
  * @param mesh the mesh
  * @param constraint_vertex_indices the constrained vertices (distinct, in range)
- * @param constraint_vertex_positions their target positions, row-major num_constraints x 3 (finite)
- * @param num_constraints number of constraints (>= 1)
+ * @param num_indices number of values in `constraint_vertex_indices` (>= 1)
+ * @param constraint_vertex_positions their target positions, row-major num_positions x 3 (finite)
+ * @param num_positions number of positions (rows of 3 doubles; must equal `num_indices`)
  * @param max_iter number of iterations (>= 0; 0 returns the input positions)
  * @param energy O3D_ARAP_ENERGY_SPOKES or O3D_ARAP_ENERGY_SMOOTHED
  * @param smoothed_alpha the weight of the smoothness term of O3D_ARAP_ENERGY_SMOOTHED (finite; Open3D: 0.01)
- * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no constraints, a repeated or out-of-range
- *   index, a non-finite position or vertex, a triangle index out of range, a negative `max_iter`, an unknown
+ * @return O3D_OK, or O3D_ERROR_INVALID_ARGUMENT on a NULL pointer, no constraints, counts that differ, a repeated or
+ *   out-of-range index, a non-finite position or vertex, a triangle index out of range, a negative `max_iter`, an unknown
  *   energy or a non-finite `smoothed_alpha`.
  */
 O3D_API o3d_status o3d_trianglemesh_deform_as_rigid_as_possible(o3d_trianglemesh_t** out,
                                                                 const o3d_trianglemesh_t* mesh,
                                                                 const int32_t* constraint_vertex_indices,
+                                                                size_t num_indices,
                                                                 const double* constraint_vertex_positions,
-                                                                size_t num_constraints, int32_t max_iter,
+                                                                size_t num_positions, int32_t max_iter,
                                                                 o3d_arap_energy energy, double smoothed_alpha);
 
 O3D_END_DECL

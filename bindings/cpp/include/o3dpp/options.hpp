@@ -7,15 +7,23 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "o3dpp/error.hpp"
 
 namespace o3dpp {
 namespace detail {
-/// @brief C -> C++ field copy (int32 flags to bool, int32 constants to enums).
+/// @brief C -> C++ field copy (int32 flags to bool, int32 constants to enums, a nested C struct to its
+/// option struct).
 struct Load {
     template <typename W, typename C>
-    void operator()(W& w, const C& c) const { w = static_cast<W>(c); }
+    void operator()(W& w, const C& c) const {
+        if constexpr (std::is_class_v<W>) {
+            w = W::from_c(c);
+        } else {
+            w = static_cast<W>(c);
+        }
+    }
     template <typename T, std::size_t N>
     void operator()(std::array<T, N>& w, const T (&c)[N]) const { std::copy(c, c + N, w.begin()); }
     void operator()(std::optional<uint64_t>& w, int32_t use, uint64_t seed) const {
@@ -25,7 +33,13 @@ struct Load {
 /// @brief C++ -> C field copy.
 struct Store {
     template <typename W, typename C>
-    void operator()(const W& w, C& c) const { c = static_cast<C>(w); }
+    void operator()(const W& w, C& c) const {
+        if constexpr (std::is_class_v<W>) {
+            c = w.to_c();
+        } else {
+            c = static_cast<C>(w);
+        }
+    }
     template <typename T, std::size_t N>
     void operator()(const std::array<T, N>& w, T (&c)[N]) const { std::copy(w.begin(), w.end(), c); }
     void operator()(const std::optional<uint64_t>& w, int32_t& use, uint64_t& seed) const {

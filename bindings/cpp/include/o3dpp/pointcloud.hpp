@@ -2,6 +2,7 @@
 #pragma once
 /// @file pointcloud.hpp
 /// @brief o3dpp::PointCloud (move-only owner of an o3d_pointcloud_t) and SearchParam.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -15,6 +16,7 @@
 #include "o3dpp/generated/options.hpp"
 #include "o3dpp/generated/pointcloud.hpp"
 #include "o3dpp/handle.hpp"
+#include "o3dpp/indexlists.hpp"
 #include "o3dpp/span.hpp"
 
 namespace o3dpp {
@@ -24,6 +26,8 @@ namespace o3dpp {
 struct SearchParam : detail::SearchParamBase {
     using Kind = SearchKind;
     SearchParam() = default;
+    /// @brief The search a field of an option struct holds (e.g. PlanarPatchOptions::search_param).
+    SearchParam(const detail::SearchParamBase& base) : detail::SearchParamBase(base) {}  // NOLINT: implicit
     SearchParam(Kind k, int max_nn, double r) {
         kind = k;
         knn = max_nn;
@@ -40,6 +44,9 @@ using PointCloudArrayFns =
              &o3d_pointcloud_array_view, &o3d_pointcloud_array_mutable_view, &o3d_pointcloud_set_array,
              &o3d_pointcloud_set_array_f32>;
 }  // namespace detail
+
+/// @brief What PointCloud::voxel_down_sample_and_trace returns (Open3D's tuple).
+struct VoxelDownSampleTrace;
 
 /// @brief A point cloud: N points, optional N normals, N colors (RGB in [0,1]) and N covariances. Move-only.
 /// The methods that pass their arguments to one C function are generated (detail::PointCloudCalls).
@@ -195,6 +202,66 @@ public:
         return done(o3d_pointcloud_estimate_covariances(get(), &c));
     }
 
+    /// @brief Each point's neighbourhood covariance (divided by the count, the point itself included; fewer than 3
+    /// neighbours give the identity), without changing `input` (Open3D's static estimate_point_covariances).
+    static std::vector<Mat3> estimate_point_covariances(const PointCloud& input,
+                                                        const SearchParam& param = SearchParam{}, int num_threads = 0) {
+        const o3d_search_param_t c = param.to_c();
+        return input.copy_out<Mat3>(&o3d_pointcloud_estimate_point_covariances, &c, num_threads);
+    }
+
+    // --- smoothing (Open3D 0.20); smooth_laplacian and smooth_taubin are generated ---
+
+    /// @brief Moving-least-squares smoothing: each point projected onto the weighted PCA plane of its neighbourhood
+    /// (Open3D's default search: hybrid, radius 0.05, 30 neighbours).
+    PointCloud smooth_mls(const SearchParam& param = SearchParam::Hybrid(0.05, 30)) const {
+        const o3d_search_param_t c = param.to_c();
+        return derive(&o3d_pointcloud_smooth_mls, &c);
+    }
+    /// @brief Bilateral smoothing (one pass): neighbours weighted by distance (`sigma_s`) and by offset along the
+    /// point's normal (`sigma_r`).
+    PointCloud smooth_bilateral(const SearchParam& param = SearchParam::Hybrid(0.05, 30), double sigma_s = 0.05,
+                                double sigma_r = 0.05) const {
+        const o3d_search_param_t c = param.to_c();
+        return derive(&o3d_pointcloud_smooth_bilateral, &c, sigma_s, sigma_r);
+    }
+
+    // --- bounding volumes, planar patches, traced down-sampling ---
+
+    /// @brief The minimum-volume oriented box of the points (see OrientedBoundingBox::create_from_points_minimal).
+    OrientedBoundingBox get_minimal_oriented_bounding_box(bool robust = false) const {
+        o3d_obb_t c{};
+        check(o3d_pointcloud_get_minimal_oriented_bounding_box(&c, get(), robust ? 1 : 0));
+        return OrientedBoundingBox::from_c(c);
+    }
+    /// @brief The minimum-volume enclosing ellipsoid (see OrientedBoundingEllipsoid::create_from_points).
+    OrientedBoundingEllipsoid get_oriented_bounding_ellipsoid(bool robust = false) const {
+        o3d_obe_t c{};
+        check(o3d_pointcloud_get_oriented_bounding_ellipsoid(&c, get(), robust ? 1 : 0));
+        return OrientedBoundingEllipsoid::from_c(c);
+    }
+    /// @brief Planar patches (Araujo & Oliveira 2020): one oriented box per patch (column 2 of R its normal),
+    /// largest first. The cloud needs normals.
+    std::vector<OrientedBoundingBox> detect_planar_patches(const PlanarPatchOptions& options = {}) const {
+        const o3d_planar_patch_options_t c = options.to_c();
+        using Box = std::array<double, 15>;  // o3d_obb_t's fields in order
+        const std::vector<Box> rows = copy_out<Box>(&o3d_pointcloud_detect_planar_patches, &c);
+        std::vector<OrientedBoundingBox> out;
+        out.reserve(rows.size());
+        for (const Box& r : rows) {
+            OrientedBoundingBox b;
+            std::copy(r.begin(), r.begin() + 3, b.center.begin());
+            std::copy(r.begin() + 3, r.begin() + 12, b.R.begin());
+            std::copy(r.begin() + 12, r.end(), b.extent.begin());
+            out.push_back(b);
+        }
+        return out;
+    }
+    /// @brief Voxel down-sampling that remembers where each output point came from (Open3D's
+    /// voxel_down_sample_and_trace): see VoxelDownSampleTrace.
+    VoxelDownSampleTrace voxel_down_sample_and_trace(double voxel_size, const Vec3& min_bound, const Vec3& max_bound,
+                                                     bool approximate_class = false) const;
+
 private:
     /// @brief Run `fn(int32_t* buffer, capacity, out_n)` with room for one index per point.
     template <typename F>
@@ -213,5 +280,36 @@ private:
         return {PointCloud(p), std::move(kept)};
     }
 };
+
+struct VoxelDownSampleTrace {
+    PointCloud cloud;  ///< one mean point per occupied voxel, sorted by voxel (z, y, x)
+    /// @brief Per output point, per octant of its voxel (bit 0, 1, 2: upper half along x, y, z), the largest input
+    /// index in that octant, or -1.
+    std::vector<std::array<int, 8>> cubic_ids;
+    IndexLists original_indices;  ///< per output point, the input indices it averages (ascending)
+};
+
+inline VoxelDownSampleTrace PointCloud::voxel_down_sample_and_trace(double voxel_size, const Vec3& min_bound,
+                                                                    const Vec3& max_bound,
+                                                                    bool approximate_class) const {
+    o3d_pointcloud_t* cloud = nullptr;
+    o3d_index_lists_t* cubic = nullptr;
+    o3d_index_lists_t* original = nullptr;
+    const o3d_status status = o3d_pointcloud_voxel_down_sample_and_trace(
+        &cloud, &cubic, &original, get(), voxel_size, min_bound.data(), max_bound.data(), approximate_class ? 1 : 0);
+    UniqueHandle<o3d_pointcloud_t, &o3d_pointcloud_destroy> owned(cloud);
+    UniqueHandle<o3d_index_lists_t, &o3d_index_lists_destroy> owned_cubic(cubic), owned_original(original);
+    check(status);
+    const IndexLists cubic_lists = detail::take_index_lists(owned_cubic.release());
+    VoxelDownSampleTrace out{PointCloud(owned.release()), {}, detail::take_index_lists(owned_original.release())};
+    out.cubic_ids.reserve(cubic_lists.size());
+    for (const std::vector<int>& ids : cubic_lists) {
+        if (ids.size() != 8) throw Error(O3D_ERROR_INTERNAL, "o3dpp: a cubic-id list without 8 entries");
+        std::array<int, 8> row{};
+        std::copy(ids.begin(), ids.end(), row.begin());
+        out.cubic_ids.push_back(row);
+    }
+    return out;
+}
 
 }  // namespace o3dpp

@@ -19,6 +19,7 @@
 #include "o3dpp/generated/trianglemesh.hpp"
 #include "o3dpp/handle.hpp"
 #include "o3dpp/image.hpp"
+#include "o3dpp/indexlists.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
 
@@ -156,6 +157,68 @@ public:
         check(o3d_trianglemesh_get_oriented_bounding_box(&c, get(), robust ? 1 : 0));
         return OrientedBoundingBox::from_c(c);
     }
+    /// @brief The minimum-volume oriented box of the vertices (OrientedBoundingBox::create_from_points_minimal).
+    OrientedBoundingBox get_minimal_oriented_bounding_box(bool robust = false) const {
+        o3d_obb_t c{};
+        check(o3d_trianglemesh_get_minimal_oriented_bounding_box(&c, get(), robust ? 1 : 0));
+        return OrientedBoundingBox::from_c(c);
+    }
+    /// @brief The minimum-volume enclosing ellipsoid of the vertices (OrientedBoundingEllipsoid::create_from_points).
+    OrientedBoundingEllipsoid get_oriented_bounding_ellipsoid(bool robust = false) const {
+        o3d_obe_t c{};
+        check(o3d_trianglemesh_get_oriented_bounding_ellipsoid(&c, get(), robust ? 1 : 0));
+        return OrientedBoundingEllipsoid::from_c(c);
+    }
+    /// @brief The box as a closed mesh of 8 vertices (get_box_points order) and 12 outward triangles, its extents
+    /// multiplied by `scale` about the centre.
+    static TriangleMesh create_from_oriented_bounding_box(const OrientedBoundingBox& obox,
+                                                          const Vec3& scale = {1.0, 1.0, 1.0},
+                                                          bool create_uv_map = false) {
+        const o3d_obb_t c = obox.to_c();
+        return create(&o3d_trianglemesh_create_from_oriented_bounding_box, &c, scale.data(), create_uv_map ? 1 : 0);
+    }
+    /// @brief The ellipsoid as a mesh (create_ellipsoid of its radii times `scale`, rotated and moved; white).
+    static TriangleMesh create_from_oriented_bounding_ellipsoid(const OrientedBoundingEllipsoid& obel,
+                                                                const Vec3& scale = {1.0, 1.0, 1.0},
+                                                                int resolution = 20, bool create_uv_map = false) {
+        const o3d_obe_t c = obel.to_c();
+        return create(&o3d_trianglemesh_create_from_oriented_bounding_ellipsoid, &c, scale.data(), resolution,
+                      create_uv_map ? 1 : 0);
+    }
+
+    // --- topology ---
+
+    /// @brief Per vertex, the vertices joined to it by a triangle side (ascending; empty for an unused vertex).
+    IndexLists compute_adjacency_list() const {
+        return detail::index_lists([&](o3d_index_lists_t** out) { return o3d_trianglemesh_compute_adjacency_list(out, get()); });
+    }
+    /// @brief Edges (min, max vertex index; ascending) of more than two triangles, and of one unless
+    /// `allow_boundary_edges`.
+    std::vector<std::array<int32_t, 2>> get_non_manifold_edges(bool allow_boundary_edges = true) const {
+        return copy_out<std::array<int32_t, 2>>(&o3d_trianglemesh_get_non_manifold_edges, allow_boundary_edges ? 1 : 0);
+    }
+    /// @brief Vertices whose triangles do not form one fan (ascending).
+    std::vector<int32_t> get_non_manifold_vertices() const {
+        return copy_out<int32_t>(&o3d_trianglemesh_get_non_manifold_vertices);
+    }
+    /// @brief Pairs (i < j, ascending) of triangles that share no vertex and intersect.
+    std::vector<std::array<int32_t, 2>> get_self_intersecting_triangles() const {
+        return copy_out<std::array<int32_t, 2>>(&o3d_trianglemesh_get_self_intersecting_triangles);
+    }
+
+    /// @brief As-rigid-as-possible deformation (Sorkine & Alexa 2007): the constrained vertices moved to their
+    /// positions (one per index), the others so that every one-ring turns as rigidly as it can; `max_iter`
+    /// alternations. The new mesh holds vertices and triangles only.
+    TriangleMesh deform_as_rigid_as_possible(const std::vector<int32_t>& constraint_vertex_indices,
+                                             const std::vector<Vec3>& constraint_vertex_positions, int max_iter,
+                                             DeformAsRigidAsPossibleEnergy energy = DeformAsRigidAsPossibleEnergy::Spokes,
+                                             double smoothed_alpha = 0.01) const {
+        return derive(&o3d_trianglemesh_deform_as_rigid_as_possible, constraint_vertex_indices.data(),
+                      constraint_vertex_indices.size(),
+                      constraint_vertex_positions.empty() ? nullptr : constraint_vertex_positions.front().data(),
+                      constraint_vertex_positions.size(), max_iter, static_cast<int32_t>(energy), smoothed_alpha);
+    }
+
     /// @brief Convex hull of the vertices: {hull (outward triangles), per hull vertex the index of its vertex}.
     std::pair<TriangleMesh, std::vector<int32_t>> compute_convex_hull(bool joggle_inputs = false) const {
         return with_indices(num_vertices(), [&](o3d_trianglemesh_t** o, int32_t* idx, size_t cap, size_t* n) {

@@ -349,6 +349,44 @@ fn rust_layout() -> Vec<(&'static str, usize, usize)> {
         ("offsetof(o3d_iss_options_t, gamma_32)", offset_of!(o3d_iss_options_t, gamma_32), 32),
         ("offsetof(o3d_iss_options_t, min_neighbors)", offset_of!(o3d_iss_options_t, min_neighbors), 40),
         ("offsetof(o3d_iss_options_t, num_threads)", offset_of!(o3d_iss_options_t, num_threads), 44),
+        ("sizeof(o3d_obe_t)", size_of::<o3d_obe_t>(), 120),
+        ("_Alignof(o3d_obe_t)", align_of::<o3d_obe_t>(), 8),
+        ("offsetof(o3d_obe_t, center)", offset_of!(o3d_obe_t, center), 0),
+        ("offsetof(o3d_obe_t, R)", offset_of!(o3d_obe_t, R), 24),
+        ("offsetof(o3d_obe_t, radii)", offset_of!(o3d_obe_t, radii), 96),
+        ("sizeof(o3d_planar_patch_options_t)", size_of::<o3d_planar_patch_options_t>(), 80),
+        ("_Alignof(o3d_planar_patch_options_t)", align_of::<o3d_planar_patch_options_t>(), 8),
+        (
+            "offsetof(o3d_planar_patch_options_t, normal_variance_threshold_deg)",
+            offset_of!(o3d_planar_patch_options_t, normal_variance_threshold_deg),
+            8,
+        ),
+        (
+            "offsetof(o3d_planar_patch_options_t, coplanarity_deg)",
+            offset_of!(o3d_planar_patch_options_t, coplanarity_deg),
+            16,
+        ),
+        (
+            "offsetof(o3d_planar_patch_options_t, outlier_ratio)",
+            offset_of!(o3d_planar_patch_options_t, outlier_ratio),
+            24,
+        ),
+        (
+            "offsetof(o3d_planar_patch_options_t, min_plane_edge_length)",
+            offset_of!(o3d_planar_patch_options_t, min_plane_edge_length),
+            32,
+        ),
+        (
+            "offsetof(o3d_planar_patch_options_t, min_num_points)",
+            offset_of!(o3d_planar_patch_options_t, min_num_points),
+            40,
+        ),
+        (
+            "offsetof(o3d_planar_patch_options_t, search_param)",
+            offset_of!(o3d_planar_patch_options_t, search_param),
+            48,
+        ),
+        ("offsetof(o3d_planar_patch_options_t, num_threads)", offset_of!(o3d_planar_patch_options_t, num_threads), 72),
         // Callback pointers are plain (nullable) function pointers.
         ("sizeof(o3d_progress_callback)", size_of::<o3d_progress_callback>(), 8),
         ("sizeof(o3d_log_callback)", size_of::<o3d_log_callback>(), 8),
@@ -570,7 +608,10 @@ fn rgbd_and_depth_options_init_accept_rust_sizes_and_fill_defaults() {
         let mut r: o3d_reconstruction_options_t = std::mem::zeroed();
         let st = o3d_reconstruction_options_init(&mut r, size_of::<o3d_reconstruction_options_t>() as u32);
         assert_eq!(st, O3D_OK, "{}", last_message());
-        assert_eq!((r.struct_size as usize, r.resume, r.num_threads), (size_of::<o3d_reconstruction_options_t>(), 1, 0));
+        assert_eq!(
+            (r.struct_size as usize, r.resume, r.num_threads),
+            (size_of::<o3d_reconstruction_options_t>(), 1, 0)
+        );
 
         let mut n: o3d_color_map_non_rigid_options_t = std::mem::zeroed();
         let st = o3d_color_map_non_rigid_options_init(&mut n, size_of::<o3d_color_map_non_rigid_options_t>() as u32);
@@ -625,6 +666,22 @@ fn surface_reconstruction_and_keypoint_options_init_accept_rust_sizes_and_fill_d
         // min_neighbors=5).
         assert_eq!((i.salient_radius, i.non_max_radius, i.gamma_21, i.gamma_32), (0.0, 0.0, 0.975, 0.975));
         assert_eq!((i.min_neighbors, i.num_threads), (5, 0));
+    }
+}
+
+#[test]
+fn planar_patch_options_init_accepts_rust_size_and_fills_defaults() {
+    unsafe {
+        let mut o: o3d_planar_patch_options_t = std::mem::zeroed();
+        let st = o3d_planar_patch_options_init(&mut o, size_of::<o3d_planar_patch_options_t>() as u32);
+        assert_eq!(st, O3D_OK, "{}", last_message());
+        assert_eq!(o.struct_size as usize, size_of::<o3d_planar_patch_options_t>());
+        // Open3D's detect_planar_patches(normal_variance_threshold_deg=60, coplanarity_deg=75, outlier_ratio=0.75,
+        // min_plane_edge_length=0, min_num_points=0, search_param=KDTreeSearchParamKNN(30)).
+        assert_eq!((o.normal_variance_threshold_deg, o.coplanarity_deg, o.outlier_ratio), (60.0, 75.0, 0.75));
+        assert_eq!((o.min_plane_edge_length, o.min_num_points, o.num_threads), (0.0, 0, 0));
+        assert_eq!((o.search_param.kind, o.search_param.knn), (O3D_SEARCH_KNN, 30));
+        assert_eq!(o.search_param.struct_size as usize, size_of::<o3d_search_param_t>());
     }
 }
 

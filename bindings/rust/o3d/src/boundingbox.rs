@@ -1,10 +1,12 @@
-//! [`OrientedBoundingBox`] (o3d.geometry.OrientedBoundingBox), a plain value, and cropping clouds
-//! and meshes by one.
+//! [`OrientedBoundingBox`] (o3d.geometry.OrientedBoundingBox) and [`OrientedBoundingEllipsoid`]
+//! (o3d.geometry.OrientedBoundingEllipsoid), plain values; the boxes and ellipsoids of clouds and
+//! meshes, meshes of them, cropping by a box, and a cloud's planar patches (one box each).
 use o3d_sys as sys;
 
 use crate::error::{check, Result};
-use crate::pointcloud::{new_cloud, PointCloud};
+use crate::pointcloud::{new_cloud, PlanarPatchOptions, PointCloud};
 use crate::trianglemesh::{new_mesh, TriangleMesh};
+use crate::util::copy_out;
 
 /// A box with centre `center`, axes the columns of the rotation `r` and full edge lengths `extent`
 /// (`o3d_obb_t`). Axis-aligned boxes are `(min_bound, max_bound)` pairs, as elsewhere in the crate.
@@ -68,6 +70,15 @@ impl OrientedBoundingBox {
         })
     }
 
+    /// The minimum-volume oriented box of `points` (at least 4, not all coplanar unless `robust`,
+    /// which joggles them); axes the right-handed order closest to the identity.
+    pub fn create_from_points_minimal(points: &[[f64; 3]], robust: bool) -> Result<OrientedBoundingBox> {
+        // SAFETY: points.len() rows of 3 contiguous doubles; writable struct.
+        Self::filled_by(|out| unsafe {
+            sys::o3d_obb_create_from_points_minimal(out, points.as_ptr().cast(), points.len(), i32::from(robust))
+        })
+    }
+
     /// The oriented box equal to the axis-aligned box `[min_bound, max_bound]` (identity axes).
     pub fn create_from_axis_aligned_bounding_box(
         min_bound: [f64; 3],
@@ -119,7 +130,111 @@ impl OrientedBoundingBox {
     }
 }
 
+/// The solid `{center + r diag(radii) u : |u| <= 1}` (`o3d_obe_t`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OrientedBoundingEllipsoid {
+    /// The ellipsoid's centre.
+    pub center: [f64; 3],
+    /// Row-major rotation; column k (`r[0][k], r[1][k], r[2][k]`) is the direction of semi-axis k.
+    pub r: [[f64; 3]; 3],
+    /// The semi-axis lengths (>= 0).
+    pub radii: [f64; 3],
+}
+
+impl Default for OrientedBoundingEllipsoid {
+    /// The empty ellipsoid at the origin with identity axes (Open3D's `OrientedBoundingEllipsoid()`).
+    fn default() -> Self {
+        OrientedBoundingEllipsoid {
+            center: [0.0; 3],
+            r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            radii: [0.0; 3],
+        }
+    }
+}
+
+impl OrientedBoundingEllipsoid {
+    /// An ellipsoid from its three parts.
+    pub fn new(center: [f64; 3], r: [[f64; 3]; 3], radii: [f64; 3]) -> OrientedBoundingEllipsoid {
+        OrientedBoundingEllipsoid { center, r, radii }
+    }
+
+    pub(crate) fn to_raw(self) -> sys::o3d_obe_t {
+        let mut rot = [0.0; 9];
+        for (i, row) in self.r.iter().enumerate() {
+            rot[3 * i..3 * i + 3].copy_from_slice(row);
+        }
+        sys::o3d_obe_t { center: self.center, R: rot, radii: self.radii }
+    }
+
+    pub(crate) fn from_raw(raw: sys::o3d_obe_t) -> OrientedBoundingEllipsoid {
+        let m = raw.R;
+        OrientedBoundingEllipsoid {
+            center: raw.center,
+            r: [[m[0], m[1], m[2]], [m[3], m[4], m[5]], [m[6], m[7], m[8]]],
+            radii: raw.radii,
+        }
+    }
+
+    /// Run a C call filling an `o3d_obe_t`.
+    pub(crate) fn filled_by(
+        f: impl FnOnce(*mut sys::o3d_obe_t) -> sys::o3d_status,
+    ) -> Result<OrientedBoundingEllipsoid> {
+        let mut raw = sys::o3d_obe_t::default();
+        check(f(&mut raw))?;
+        Ok(OrientedBoundingEllipsoid::from_raw(raw))
+    }
+
+    /// The minimum-volume enclosing ellipsoid of `points` (at least 4, not all coplanar): Khachiyan's
+    /// algorithm with Open3D's tolerance, so a point may lie up to about 0.2% outside. `robust`
+    /// joggles the hull's input.
+    pub fn create_from_points(points: &[[f64; 3]], robust: bool) -> Result<OrientedBoundingEllipsoid> {
+        // SAFETY: points.len() rows of 3 contiguous doubles; writable struct.
+        Self::filled_by(|out| unsafe {
+            sys::o3d_obe_create_from_points(out, points.as_ptr().cast(), points.len(), i32::from(robust))
+        })
+    }
+
+    /// Volume: 4/3 pi times the product of the radii.
+    pub fn volume(&self) -> f64 {
+        4.0 / 3.0 * std::f64::consts::PI * self.radii.iter().product::<f64>()
+    }
+
+    /// The centre (Open3D's `get_center`).
+    pub fn get_center(&self) -> [f64; 3] {
+        self.center
+    }
+}
+
 impl PointCloud {
+    /// The minimum-volume oriented box of the points (see
+    /// [`OrientedBoundingBox::create_from_points_minimal`]).
+    pub fn get_minimal_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
+        // SAFETY: valid handle; writable struct.
+        OrientedBoundingBox::filled_by(|out| unsafe {
+            sys::o3d_pointcloud_get_minimal_oriented_bounding_box(out, self.as_raw(), i32::from(robust))
+        })
+    }
+
+    /// The minimum-volume enclosing ellipsoid of the points (see
+    /// [`OrientedBoundingEllipsoid::create_from_points`]).
+    pub fn get_oriented_bounding_ellipsoid(&self, robust: bool) -> Result<OrientedBoundingEllipsoid> {
+        // SAFETY: valid handle; writable struct.
+        OrientedBoundingEllipsoid::filled_by(|out| unsafe {
+            sys::o3d_pointcloud_get_oriented_bounding_ellipsoid(out, self.as_raw(), i32::from(robust))
+        })
+    }
+
+    /// Planar patches (Araujo & Oliveira 2020, Open3D's `detect_planar_patches`): one oriented box
+    /// per patch (column 2 of `r` its normal), largest first. The cloud needs normals.
+    pub fn detect_planar_patches(&self, options: &PlanarPatchOptions) -> Result<Vec<OrientedBoundingBox>> {
+        let raw = options.to_raw()?;
+        // SAFETY: `out` has room for `cap` boxes (o3d_obb_t is the documented 15 doubles) or is NULL.
+        let boxes = copy_out::<sys::o3d_obb_t>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_detect_planar_patches(out.cast(), cap, n, self.as_raw(), &raw)
+        })?;
+        Ok(boxes.into_iter().map(OrientedBoundingBox::from_raw).collect())
+    }
+
     /// The oriented bounding box of the points (see [`OrientedBoundingBox::create_from_points`]).
     pub fn get_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
         // SAFETY: valid handle; writable struct.
@@ -137,6 +252,60 @@ impl PointCloud {
 }
 
 impl TriangleMesh {
+    /// The minimum-volume oriented box of the vertices (see
+    /// [`OrientedBoundingBox::create_from_points_minimal`]).
+    pub fn get_minimal_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
+        // SAFETY: valid handle; writable struct.
+        OrientedBoundingBox::filled_by(|out| unsafe {
+            sys::o3d_trianglemesh_get_minimal_oriented_bounding_box(out, self.as_raw(), i32::from(robust))
+        })
+    }
+
+    /// The minimum-volume enclosing ellipsoid of the vertices (see
+    /// [`OrientedBoundingEllipsoid::create_from_points`]).
+    pub fn get_oriented_bounding_ellipsoid(&self, robust: bool) -> Result<OrientedBoundingEllipsoid> {
+        // SAFETY: valid handle; writable struct.
+        OrientedBoundingEllipsoid::filled_by(|out| unsafe {
+            sys::o3d_trianglemesh_get_oriented_bounding_ellipsoid(out, self.as_raw(), i32::from(robust))
+        })
+    }
+
+    /// The box as a closed mesh of 8 vertices (its `get_box_points` order) and 12 outward triangles,
+    /// its extents multiplied by `scale` about the centre (Open3D's default `[1.0; 3]`).
+    pub fn create_from_oriented_bounding_box(
+        obox: &OrientedBoundingBox,
+        scale: [f64; 3],
+        create_uv_map: bool,
+    ) -> Result<TriangleMesh> {
+        let raw = obox.to_raw();
+        // SAFETY: valid struct and 3 doubles.
+        new_mesh(|out| unsafe {
+            sys::o3d_trianglemesh_create_from_oriented_bounding_box(out, &raw, scale.as_ptr(), i32::from(create_uv_map))
+        })
+    }
+
+    /// The ellipsoid as a mesh: [`TriangleMesh::create_ellipsoid`] of its radii times `scale`
+    /// (`resolution` rings, Open3D's default 20), rotated and moved to it, painted white.
+    pub fn create_from_oriented_bounding_ellipsoid(
+        obel: &OrientedBoundingEllipsoid,
+        scale: [f64; 3],
+        resolution: usize,
+        create_uv_map: bool,
+    ) -> Result<TriangleMesh> {
+        let raw = obel.to_raw();
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        // SAFETY: valid struct and 3 doubles.
+        new_mesh(|out| unsafe {
+            sys::o3d_trianglemesh_create_from_oriented_bounding_ellipsoid(
+                out,
+                &raw,
+                scale.as_ptr(),
+                resolution,
+                i32::from(create_uv_map),
+            )
+        })
+    }
+
     /// The oriented bounding box of the vertices.
     pub fn get_oriented_bounding_box(&self, robust: bool) -> Result<OrientedBoundingBox> {
         // SAFETY: valid handle; writable struct.

@@ -46,6 +46,7 @@ pub mod camera;
 pub mod color_map;
 mod error;
 mod feature;
+mod halfedgemesh;
 mod hull;
 mod image;
 pub mod integration;
@@ -76,22 +77,23 @@ pub mod visualization;
 mod visualizer;
 mod voxelgrid;
 
-pub use boundingbox::OrientedBoundingBox;
+pub use boundingbox::{OrientedBoundingBox, OrientedBoundingEllipsoid};
 pub use camera::{CameraTrajectory, IntrinsicPreset, PinholeCameraParameters, PinholeIntrinsic};
 pub use error::{Error, ErrorCode, Result};
 pub use feature::Feature;
+pub use halfedgemesh::{HalfEdge, HalfEdgeTriangleMesh};
 pub use image::{ConvertType, Image, ImageFilter, PixelType};
 pub use kdtree::{KDTreeFlann, SearchResult, SearchResultRef};
 pub use lineset::LineSet;
 pub use octree::{Octree, OctreeLeaf, OctreeNodeInfo};
-pub use pointcloud::{PointCloud, SearchParam};
+pub use pointcloud::{PlanarPatchOptions, PointCloud, SearchParam, VoxelDownSampleTrace};
 pub use posegraph::{PoseGraph, PoseGraphEdge};
 pub use registration_global::random_seed;
 pub use rgbd::{DepthToCloudOptions, RgbdFormat, RgbdImage, RgbdOptions};
 pub use surface_reconstruction::PoissonOptions;
 pub use tetramesh::TetraMesh;
 pub use trianglemesh::{MeshArray, TriangleMesh};
-pub use trianglemesh_ops::{FilterScope, SimplificationContraction, TriangleClusters};
+pub use trianglemesh_ops::{DeformAsRigidAsPossibleEnergy, FilterScope, SimplificationContraction, TriangleClusters};
 pub use visualization::{
     ColorOption, Drawable, KeyAction, MeshShadeOption, MouseButton, OffscreenRenderer, RenderBackend, RenderMaterial,
     RenderOption, Shader, View, Visualizer,

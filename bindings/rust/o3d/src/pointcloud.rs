@@ -6,7 +6,7 @@ use o3d_sys as sys;
 
 use crate::array::{impl_arrays, Family};
 use crate::error::{check, Error, ErrorCode, Result};
-use crate::util::{copy_out, handle, init_struct, to_i32};
+use crate::util::{copy_out, handle, index, init_struct, options, to_i32, CField, IndexLists};
 
 include!("generated/pointcloud.rs");
 
@@ -79,6 +79,28 @@ impl SearchParam {
         }
         Ok(raw)
     }
+}
+
+/// A search held by an options struct (e.g. [`PlanarPatchOptions::search_param`]).
+impl CField<sys::o3d_search_param_t> for SearchParam {
+    fn to_c(&self, _: &str) -> Result<sys::o3d_search_param_t> {
+        self.to_raw()
+    }
+    fn from_c(c: sys::o3d_search_param_t) -> Result<Self> {
+        SearchParam::from_raw(c)
+    }
+}
+
+/// What [`PointCloud::voxel_down_sample_and_trace`] returns (Open3D's tuple).
+#[derive(Debug)]
+pub struct VoxelDownSampleTrace {
+    /// One mean point per occupied voxel, sorted by voxel (z, y, x).
+    pub cloud: PointCloud,
+    /// Per output point, per octant of its voxel (bit 0, 1, 2: the upper half along x, y, z), the
+    /// largest input index in that octant, if any.
+    pub cubic_ids: Vec<[Option<usize>; 8]>,
+    /// Per output point, the input indices it averages (ascending).
+    pub original_indices: Vec<Vec<usize>>,
 }
 
 handle! {
@@ -235,6 +257,80 @@ impl PointCloud {
         // SAFETY: valid handle and parameter struct.
         check(unsafe { sys::o3d_pointcloud_estimate_covariances(self.raw_mut(), &raw) })?;
         Ok(self)
+    }
+
+    /// Each point's neighbourhood covariance (divided by the count, the point itself included; fewer
+    /// than 3 neighbours give the identity), without changing `input` (Open3D's static
+    /// `PointCloud.estimate_point_covariances`; `SearchParam::default()` is its KNN 30).
+    pub fn estimate_point_covariances(input: &PointCloud, param: SearchParam) -> Result<Vec<Mat3>> {
+        let raw = param.to_raw()?;
+        // SAFETY: `out` has room for `cap` matrices of 9 contiguous doubles or is NULL.
+        copy_out::<Mat3>(|out, cap, n| unsafe {
+            sys::o3d_pointcloud_estimate_point_covariances(out.cast(), cap, n, input.as_raw(), &raw, 0)
+        })
+    }
+
+    /// Moving-least-squares smoothing: each point projected onto the weighted PCA plane of its
+    /// neighbourhood (Open3D's default search: [`SearchParam::Hybrid`] radius 0.05, 30 neighbours).
+    pub fn smooth_mls(&self, param: SearchParam) -> Result<PointCloud> {
+        let raw = param.to_raw()?;
+        // SAFETY: valid handle and parameter struct.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_smooth_mls(out, self.as_raw(), &raw) })
+    }
+
+    /// Bilateral smoothing (one pass): neighbours weighted by distance (`sigma_s`) and by their offset
+    /// along the point's normal (`sigma_r`). Open3D's defaults: hybrid 0.05 / 30, 0.05, 0.05.
+    pub fn smooth_bilateral(&self, param: SearchParam, sigma_s: f64, sigma_r: f64) -> Result<PointCloud> {
+        let raw = param.to_raw()?;
+        // SAFETY: valid handle and parameter struct.
+        new_cloud(|out| unsafe { sys::o3d_pointcloud_smooth_bilateral(out, self.as_raw(), &raw, sigma_s, sigma_r) })
+    }
+
+    /// Voxel down-sampling that remembers where each output point came from (Open3D's
+    /// `voxel_down_sample_and_trace`); voxel (i, j, k) spans `min_bound + voxel_size * [i, i + 1) x ...`.
+    /// With `approximate_class` colors are classes (the most frequent integer red value) instead of means.
+    pub fn voxel_down_sample_and_trace(
+        &self,
+        voxel_size: f64,
+        min_bound: [f64; 3],
+        max_bound: [f64; 3],
+        approximate_class: bool,
+    ) -> Result<VoxelDownSampleTrace> {
+        let (mut cloud, mut cubic, mut original) = (ptr::null_mut(), ptr::null_mut(), ptr::null_mut());
+        // SAFETY: valid handle; 3 + 3 doubles; three out-pointers.
+        let status = unsafe {
+            sys::o3d_pointcloud_voxel_down_sample_and_trace(
+                &mut cloud,
+                &mut cubic,
+                &mut original,
+                self.as_raw(),
+                voxel_size,
+                min_bound.as_ptr(),
+                max_bound.as_ptr(),
+                i32::from(approximate_class),
+            )
+        };
+        // Own all three before looking at the status, so nothing leaks.
+        let (cubic, original) = (IndexLists(cubic), IndexLists(original));
+        let cloud = NonNull::new(cloud);
+        check(status)?;
+        let cloud = owned(cloud)?;
+        let cubic_ids = cubic
+            .to_vecs()?
+            .into_iter()
+            .map(|ids| {
+                let ids: [i32; 8] = ids.try_into().map_err(|_| {
+                    Error::new(ErrorCode::Internal, "the library returned a cubic-id list without 8 entries")
+                })?;
+                Ok(ids.map(|i| usize::try_from(i).ok()))
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let original_indices = original
+            .to_vecs()?
+            .into_iter()
+            .map(|list| list.into_iter().map(index).collect())
+            .collect::<Result<Vec<_>>>()?;
+        Ok(VoxelDownSampleTrace { cloud, cubic_ids, original_indices })
     }
 
     /// Axis-aligned bounding box as (min corner, max corner).

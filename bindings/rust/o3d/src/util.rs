@@ -60,6 +60,69 @@ pub(crate) fn copy_out<T: Copy + Default>(
     Ok(out)
 }
 
+/// Run a C call writing an `o3d_index_lists_t` and copy the lists out as `i32`s (the handle is freed
+/// here, also when the call or the copy fails).
+pub(crate) fn index_lists_i32(
+    f: impl FnOnce(*mut *mut sys::o3d_index_lists_t) -> sys::o3d_status,
+) -> Result<Vec<Vec<i32>>> {
+    let mut raw = ptr::null_mut();
+    let status = f(&mut raw);
+    let owned = IndexLists(raw);
+    check(status)?;
+    owned.to_vecs()
+}
+
+/// Run a C call writing an `o3d_index_lists_t` of indices (never negative) and copy them out (Open3D's
+/// `List[IntVector]`).
+pub(crate) fn index_lists(
+    f: impl FnOnce(*mut *mut sys::o3d_index_lists_t) -> sys::o3d_status,
+) -> Result<Vec<Vec<usize>>> {
+    index_lists_i32(f)?.into_iter().map(|list| list.into_iter().map(index).collect()).collect()
+}
+
+/// A C index (documented non-negative) as `usize`; a negative one is an `Internal` error.
+pub(crate) fn index(i: i32) -> Result<usize> {
+    usize::try_from(i).map_err(|_| Error::new(ErrorCode::Internal, format!("the library returned index {i}")))
+}
+
+/// An owned `o3d_index_lists_t` (NULL allowed), destroyed on drop.
+pub(crate) struct IndexLists(pub(crate) *mut sys::o3d_index_lists_t);
+
+impl IndexLists {
+    /// The lists, each a `Vec` (offsets and values copied once).
+    pub(crate) fn to_vecs(&self) -> Result<Vec<Vec<i32>>> {
+        let (mut num_lists, mut total) = (0usize, 0usize);
+        // SAFETY: the handle (or NULL, an error) and out-pointers.
+        check(unsafe { sys::o3d_index_lists_num_lists(&mut num_lists, self.0) })?;
+        // SAFETY: as above.
+        check(unsafe { sys::o3d_index_lists_num_values(&mut total, self.0) })?;
+        let mut offsets = vec![0i64; num_lists + 1];
+        let mut values = vec![0i32; total];
+        let mut n = 0usize;
+        // SAFETY: buffers of the lengths passed.
+        check(unsafe { sys::o3d_index_lists_get_offsets(offsets.as_mut_ptr(), offsets.len(), &mut n, self.0) })?;
+        // SAFETY: as above.
+        check(unsafe { sys::o3d_index_lists_get_values(values.as_mut_ptr(), values.len(), &mut n, self.0) })?;
+        offsets
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (usize::try_from(w[0]), usize::try_from(w[1]));
+                match (a, b) {
+                    (Ok(a), Ok(b)) if a <= b && b <= values.len() => Ok(values[a..b].to_vec()),
+                    _ => Err(Error::new(ErrorCode::Internal, "the library returned bad index-list offsets")),
+                }
+            })
+            .collect()
+    }
+}
+
+impl Drop for IndexLists {
+    fn drop(&mut self) {
+        // SAFETY: owned (or NULL, a no-op), destroyed once.
+        unsafe { sys::o3d_index_lists_destroy(self.0) }
+    }
+}
+
 /// An owned C handle type: the struct, `Send` + `Sync` (the C rule: concurrent calls on one handle
 /// are safe when all take it `const`; `&self` methods make only `const` calls and every mutation
 /// takes `&mut self`), `from_raw` / `as_raw` / `raw_mut`, `Drop`, a crate-private constructor

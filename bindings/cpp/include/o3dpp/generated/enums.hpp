@@ -28,6 +28,14 @@ enum class FeatureArray : int32_t {
     Data = O3D_FEATURE_DATA,  ///< num x dimension float64: row i is the descriptor of point i; set_array keeps the dimension
 };
 
+/// @brief The float64 arrays of a half-edge mesh (O3D_HALFEDGEMESH_*), N x 3 each.
+enum class HalfEdgeTriangleMeshArray : int32_t {
+    Vertices = O3D_HALFEDGEMESH_VERTICES,  ///< vertex positions
+    VertexNormals = O3D_HALFEDGEMESH_VERTEX_NORMALS,  ///< unit, area-weighted vertex normals
+    VertexColors = O3D_HALFEDGEMESH_VERTEX_COLORS,  ///< vertex colors (empty when the mesh had none)
+    TriangleNormals = O3D_HALFEDGEMESH_TRIANGLE_NORMALS,  ///< unit triangle normals
+};
+
 /// @brief The arrays of an image (O3D_IMAGE_*: its pixel bytes).
 enum class ImageArray : int32_t {
     Data = O3D_IMAGE_DATA,  ///< the pixels: height x width x channels values of bytes_per_channel bytes, in bytes (one byte a row); set_array needs exactly that many
@@ -168,6 +176,12 @@ enum class FilterScope : int32_t {
     Color = O3D_FILTER_SCOPE_COLOR,  ///< colors only
     Normal = O3D_FILTER_SCOPE_NORMAL,  ///< normals only
     Vertex = O3D_FILTER_SCOPE_VERTEX,  ///< positions only
+};
+
+/// @brief The energy deform_as_rigid_as_possible minimises (O3D_ARAP_ENERGY_*; Open3D's DeformAsRigidAsPossibleEnergy).
+enum class DeformAsRigidAsPossibleEnergy : int32_t {
+    Spokes = O3D_ARAP_ENERGY_SPOKES,  ///< Sorkine & Alexa 2007: the spokes of each vertex's one-ring
+    Smoothed = O3D_ARAP_ENERGY_SMOOTHED,  ///< Spokes plus the rotation smoothness of Levi & Gotsman 2015
 };
 
 /// @brief Where the renderer's OpenGL context comes from (O3D_RENDER_BACKEND_*).

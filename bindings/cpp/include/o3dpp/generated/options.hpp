@@ -255,6 +255,33 @@ struct IssOptionsFields {
 struct IssOptions : COptions<IssOptions, detail::IssOptionsFields, o3d_iss_options_t, &o3d_iss_options_init> {};
 
 namespace detail {
+/// @brief The fields of o3d_planar_patch_options_t (pointcloud.h).
+struct PlanarPatchOptionsFields {
+    double normal_variance_threshold_deg;  ///< largest spread of the normals in a patch, in (0, 90]; default 60
+    double coplanarity_deg;  ///< flatness: a larger angle asks a flatter patch, in (0, 90]; default 75
+    double outlier_ratio;  ///< largest share of outliers in a patch, in [0, 1); default 0.75
+    double min_plane_edge_length;  ///< shortest long edge kept (0: 1% of the cloud's largest extent); default 0
+    int min_num_points;  ///< fewest points in a patch (0: max(10, N / 1000)); default 0
+    SearchParamBase search_param;  ///< the neighbourhood that grows patches; default KNN 30
+    int32_t num_threads;  ///< 0 = the library default; default 0
+
+    template <typename S, typename C, typename F>
+    static void fields(S& s, C& c, F f) {
+        f(s.normal_variance_threshold_deg, c.normal_variance_threshold_deg);
+        f(s.coplanarity_deg, c.coplanarity_deg);
+        f(s.outlier_ratio, c.outlier_ratio);
+        f(s.min_plane_edge_length, c.min_plane_edge_length);
+        f(s.min_num_points, c.min_num_points);
+        f(s.search_param, c.search_param);
+        f(s.num_threads, c.num_threads);
+    }
+};
+}  // namespace detail
+
+/// @brief Options of o3d_pointcloud_detect_planar_patches (Open3D's keywords and defaults). Defaults from o3d_planar_patch_options_init.
+struct PlanarPatchOptions : COptions<PlanarPatchOptions, detail::PlanarPatchOptionsFields, o3d_planar_patch_options_t, &o3d_planar_patch_options_init> {};
+
+namespace detail {
 /// @brief The fields of o3d_pose_graph_edge_t (posegraph.h).
 struct PoseGraphEdgeFields {
     int32_t source_node_id;  ///< index of the source node; default 0

@@ -126,6 +126,14 @@ public:
     Self& remove_duplicated_points() {
         return self().done(o3d_pointcloud_remove_duplicated_points(self().get()));
     }
+    /// @brief Graph-Laplacian smoothing: `iterations` times, x_i += lambda * (mean of its `knn` nearest other points - x_i), every point from the previous iteration; the kNN graph is rebuilt each time unless `use_fixed_neighborhoods`. Normals and colors are kept.
+    Self smooth_laplacian(int iterations = 10, double lambda = 0.5, int knn = 20, bool use_fixed_neighborhoods = false) const {
+        return Self::adopt([&](auto** out) { return o3d_pointcloud_smooth_laplacian(out, self().get(), iterations, lambda, knn, use_fixed_neighborhoods ? 1 : 0); });
+    }
+    /// @brief Taubin smoothing: per iteration a Laplacian pass with `lambda`, then one with `mu` (negative: it undoes the shrinking). Otherwise as o3d_pointcloud_smooth_laplacian.
+    Self smooth_taubin(int iterations = 10, double lambda = 0.5, double mu = -0.53, int knn = 20, bool use_fixed_neighborhoods = false) const {
+        return Self::adopt([&](auto** out) { return o3d_pointcloud_smooth_taubin(out, self().get(), iterations, lambda, mu, knn, use_fixed_neighborhoods ? 1 : 0); });
+    }
 
 private:
     Self& self() { return static_cast<Self&>(*this); }

@@ -270,6 +270,26 @@ public:
     static Self create_icosahedron(double radius = 1.0) {
         return Self::adopt([&](auto** out) { return o3d_trianglemesh_create_icosahedron(out, radius); });
     }
+    /// @brief Whether any triangle of `mesh` intersects any triangle of `other` (touching counts).
+    bool is_intersecting(const Self& other) const {
+        int32_t out = 0;
+        check(o3d_trianglemesh_is_intersecting(&out, self().get(), other.get()));
+        return out != 0;
+    }
+    /// @brief Turn triangles over so that every edge shared by two triangles is walked once each way (Open3D's orient_triangles); in each connected part the lowest-index triangle keeps its winding, and the normals of the turned triangles are negated. A mesh that cannot be oriented (a Moebius strip, an edge of three triangles) is left unchanged and gives 0.
+    bool orient_triangles() {
+        int32_t out = 0;
+        self().done(o3d_trianglemesh_orient_triangles(&out, self().get()));
+        return out != 0;
+    }
+    /// @brief Sharpening: `number_of_iterations` times, v += strength * sum over its neighbours (v - neighbour), for the attributes `filter_scope` selects (Open3D's filter_sharpen; colors are not clamped, as there). Otherwise as o3d_trianglemesh_filter_smooth_simple.
+    Self filter_sharpen(int number_of_iterations = 1, double strength = 1.0, FilterScope filter_scope = FilterScope::All) const {
+        return Self::adopt([&](auto** out) { return o3d_trianglemesh_filter_sharpen(out, self().get(), number_of_iterations, strength, static_cast<int32_t>(filter_scope)); });
+    }
+    /// @brief An ellipsoid centred at the origin with semi-axes `radius_x`, `radius_y`, `radius_z` along x, y, z: the vertices and triangles of Open3D's create_ellipsoid (2 poles and resolution - 1 rings of 2 * resolution vertices), wound outwards.
+    static Self create_ellipsoid(double radius_x = 1.0, double radius_y = 1.0, double radius_z = 1.0, int resolution = 20, bool create_uv_map = false) {
+        return Self::adopt([&](auto** out) { return o3d_trianglemesh_create_ellipsoid(out, radius_x, radius_y, radius_z, resolution, create_uv_map ? 1 : 0); });
+    }
 
 private:
     Self& self() { return static_cast<Self&>(*this); }

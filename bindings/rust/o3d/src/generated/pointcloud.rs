@@ -2,6 +2,27 @@
 // The enums, options structs and pass-through methods of src/pointcloud.rs (`include!`d there),
 // from capi/include/o3d/*.h.
 
+options! {
+    /// Options of `o3d_pointcloud_detect_planar_patches` (Open3D's keywords and defaults). `Default` is the library's (`o3d_planar_patch_options_init`).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct PlanarPatchOptions(sys::o3d_planar_patch_options_t, sys::o3d_planar_patch_options_init) {
+        /// Largest spread of the normals in a patch, in (0, 90]; default 60.
+        pub normal_variance_threshold_deg: f64 = normal_variance_threshold_deg,
+        /// Flatness: a larger angle asks a flatter patch, in (0, 90]; default 75.
+        pub coplanarity_deg: f64 = coplanarity_deg,
+        /// Largest share of outliers in a patch, in [0, 1); default 0.75.
+        pub outlier_ratio: f64 = outlier_ratio,
+        /// Shortest long edge kept (0: 1% of the cloud's largest extent); default 0.
+        pub min_plane_edge_length: f64 = min_plane_edge_length,
+        /// Fewest points in a patch (0: max(10, N / 1000)); default 0.
+        pub min_num_points: usize = min_num_points,
+        /// The neighbourhood that grows patches; default KNN 30.
+        pub search_param: SearchParam = (search_param),
+        /// 0 = the library default; default 0.
+        pub num_threads: i32 = num_threads,
+    }
+}
+
 impl PointCloud {
     /// Number of points.
     pub fn try_len(&self) -> Result<usize> {
@@ -118,5 +139,19 @@ impl PointCloud {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_pointcloud_remove_duplicated_points(self.raw_mut()) })?;
         Ok(self)
+    }
+    /// Graph-Laplacian smoothing: `iterations` times, x_i += lambda * (mean of its `knn` nearest other points - x_i), every point from the previous iteration; the kNN graph is rebuilt each time unless `use_fixed_neighborhoods`. Normals and colors are kept.
+    pub fn smooth_laplacian(&self, iterations: usize, lambda: f64, knn: usize, use_fixed_neighborhoods: bool) -> Result<PointCloud> {
+        let iterations = crate::util::to_i32(iterations, "iterations")?;
+        let knn = crate::util::to_i32(knn, "knn")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::pointcloud::new_cloud(|out| unsafe { sys::o3d_pointcloud_smooth_laplacian(out, self.as_raw(), iterations, lambda, knn, i32::from(use_fixed_neighborhoods)) })
+    }
+    /// Taubin smoothing: per iteration a Laplacian pass with `lambda`, then one with `mu` (negative: it undoes the shrinking). Otherwise as `o3d_pointcloud_smooth_laplacian`.
+    pub fn smooth_taubin(&self, iterations: usize, lambda: f64, mu: f64, knn: usize, use_fixed_neighborhoods: bool) -> Result<PointCloud> {
+        let iterations = crate::util::to_i32(iterations, "iterations")?;
+        let knn = crate::util::to_i32(knn, "knn")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::pointcloud::new_cloud(|out| unsafe { sys::o3d_pointcloud_smooth_taubin(out, self.as_raw(), iterations, lambda, mu, knn, i32::from(use_fixed_neighborhoods)) })
     }
 }

@@ -30,6 +30,18 @@ c_enum! {
     }
 }
 
+c_enum! {
+    /// The energy deform_as_rigid_as_possible minimises (`O3D_ARAP_ENERGY_*`; Open3D's DeformAsRigidAsPossibleEnergy).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+    pub enum DeformAsRigidAsPossibleEnergy("arap energy") {
+        /// Sorkine & Alexa 2007: the spokes of each vertex's one-ring.
+        #[default]
+        Spokes = sys::O3D_ARAP_ENERGY_SPOKES,
+        /// Spokes plus the rotation smoothness of Levi & Gotsman 2015.
+        Smoothed = sys::O3D_ARAP_ENERGY_SMOOTHED,
+    }
+}
+
 impl TriangleMesh {
     /// Remove everything (arrays and textures).
     pub fn clear(&mut self) -> Result<&mut Self> {
@@ -342,5 +354,29 @@ impl TriangleMesh {
     pub fn create_icosahedron(radius: f64) -> Result<TriangleMesh> {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_icosahedron(out, radius) })
+    }
+    /// Whether any triangle of `mesh` intersects any triangle of `other` (touching counts).
+    pub fn is_intersecting(&self, other: &TriangleMesh) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_is_intersecting(&mut out, self.as_raw(), other.as_raw()) }).map(|()| out != 0)
+    }
+    /// Turn triangles over so that every edge shared by two triangles is walked once each way (Open3D's orient_triangles); in each connected part the lowest-index triangle keeps its winding, and the normals of the turned triangles are negated. A mesh that cannot be oriented (a Moebius strip, an edge of three triangles) is left unchanged and gives 0.
+    pub fn orient_triangles(&mut self) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_trianglemesh_orient_triangles(&mut out, self.raw_mut()) }).map(|()| out != 0)
+    }
+    /// Sharpening: `number_of_iterations` times, v += strength * sum over its neighbours (v - neighbour), for the attributes `filter_scope` selects (Open3D's filter_sharpen; colors are not clamped, as there). Otherwise as `o3d_trianglemesh_filter_smooth_simple`.
+    pub fn filter_sharpen(&self, number_of_iterations: usize, strength: f64, filter_scope: FilterScope) -> Result<TriangleMesh> {
+        let number_of_iterations = crate::util::to_i32(number_of_iterations, "number_of_iterations")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_filter_sharpen(out, self.as_raw(), number_of_iterations, strength, filter_scope.raw()) })
+    }
+    /// An ellipsoid centred at the origin with semi-axes `radius_x`, `radius_y`, `radius_z` along x, y, z: the vertices and triangles of Open3D's create_ellipsoid (2 poles and resolution - 1 rings of 2 * resolution vertices), wound outwards.
+    pub fn create_ellipsoid(radius_x: f64, radius_y: f64, radius_z: f64, resolution: usize, create_uv_map: bool) -> Result<TriangleMesh> {
+        let resolution = crate::util::to_i32(resolution, "resolution")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::trianglemesh::new_mesh(|out| unsafe { sys::o3d_trianglemesh_create_ellipsoid(out, radius_x, radius_y, radius_z, resolution, i32::from(create_uv_map)) })
     }
 }

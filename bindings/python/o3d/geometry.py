@@ -422,5 +422,6 @@ __all__ = ["PointCloud", "TriangleMesh", "TetraMesh", "Image", "RGBDImage", "Sim
            "ImageFilterType", "ColorToIntensityConversionType", "KDTreeFlann", "KDTreeSearchParam",
            "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox",
            "OrientedBoundingBox", "OrientedBoundingEllipsoid", "HalfEdgeTriangleMesh", "HalfEdge",
-           "DeformAsRigidAsPossibleEnergy", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo", "OctreeLeafNode",
+           "DeformAsRigidAsPossibleEnergy", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo",
+           "OctreeLeafNode",
            "OctreePointColorLeafNode", "keypoint"]

@@ -11,7 +11,8 @@ namespace o3dpy {
 
 o3d_status read_index_lists(IndexRows& out, const o3d_index_lists_t* lists) {
     size_t n = 0, total = 0, got = 0;
-    o3d_status s = o3d_index_lists_counts(&n, &total, lists);
+    o3d_status s = o3d_index_lists_num_lists(&n, lists);
+    if (s == O3D_OK) s = o3d_index_lists_num_values(&total, lists);
     if (s != O3D_OK) return s;
     out.offsets.assign(n + 1, 0);
     out.values.assign(total, 0);
@@ -241,15 +242,12 @@ void define_mesh(py::module_& m) {
                int64_t max_iter, DeformAsRigidAsPossibleEnergy energy, double smoothed_alpha) {
                 const std::vector<int32_t> idx = int32_indices(constraint_vertex_indices, "constraint_vertex_indices");
                 const auto pos = rows3_f64(constraint_vertex_positions, "constraint_vertex_positions");
-                if ((size_t)pos.shape(0) != idx.size())
-                    invalid("deform_as_rigid_as_possible: " + std::to_string(idx.size()) +
-                            " constraint_vertex_indices but " + std::to_string(pos.shape(0)) +
-                            " constraint_vertex_positions");
+                const size_t npos = (size_t)pos.shape(0);
                 const int32_t iters = int32_of(max_iter, "max_iter");
                 o3d_trianglemesh_t* out = nullptr;
                 locked_const(self.h, [&](const o3d_trianglemesh_t* p) {
                     return o3d_trianglemesh_deform_as_rigid_as_possible(
-                        &out, p, idx.empty() ? nullptr : idx.data(), idx.empty() ? nullptr : pos.data(), idx.size(),
+                        &out, p, idx.empty() ? nullptr : idx.data(), idx.size(), npos ? pos.data() : nullptr, npos,
                         iters, (int32_t)energy, smoothed_alpha);
                 });
                 return PyTriangleMesh(out);

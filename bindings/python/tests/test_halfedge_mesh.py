@@ -36,7 +36,8 @@ def test_tetrahedron_half_edges():
         assert h.vertex_indices.tolist() == [tris[t][k], tris[t][(k + 1) % 3]]
         assert not h.is_boundary() and edges[h.twin].twin == i
         assert edges[h.twin].vertex_indices.tolist() == h.vertex_indices.tolist()[::-1]
-    assert [x.tolist() for x in he.ordered_half_edge_from_vertex] == [[0, 6, 3], [2, 9, 7], [1, 5, 10], [4, 8, 11]]  # wheel
+    ordered = [x.tolist() for x in he.ordered_half_edge_from_vertex]
+    assert ordered == [[0, 6, 3], [2, 9, 7], [1, 5, 10], [4, 8, 11]]  # wheel
     assert he.get_boundaries() == []
     assert he.boundary_half_edges_from_vertex(0).tolist() == []  # Open3D raises here; the C API gives no loop
     assert he.get_center() == pytest.approx(np.asarray(tet.vertices).mean(axis=0))

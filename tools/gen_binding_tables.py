@@ -107,6 +107,7 @@ PY_ENUMS = {
     "o3d_intrinsic_preset": [("IntrinsicPreset", "PinholeCameraIntrinsicParameters")],
     "o3d_simplification_contraction": None, "o3d_filter_scope": None,
     "o3d_tsdf_volume_color_type": [("TSDFVolumeColorType",) * 2], "o3d_reconstruction_stage": None,
+    "o3d_arap_energy": [("DeformAsRigidAsPossibleEnergy",) * 2],
 }
 PY_VARIANTS = {
     "O3D_MESH_SHADE_FLAT": "FlatShade", "O3D_MESH_SHADE_SMOOTH": "SmoothShade", "O3D_IMAGE_FILTER_SOBEL3_DX": "Sobel3dx",
@@ -431,6 +432,15 @@ PY_METHODS = {
                                                             "split": "=1", **PY_NO_UV}),
     **{f"o3d_trianglemesh_create_{c}": ("TriangleMesh", None, {"radius": "=1.0", **PY_NO_UV})
        for c in ("tetrahedron", "octahedron", "icosahedron")},
+    "o3d_trianglemesh_is_intersecting": ("TriangleMesh", None, {}),
+    "o3d_trianglemesh_orient_triangles": ("TriangleMesh", None, {}),
+    "o3d_trianglemesh_filter_sharpen": ("TriangleMesh", None, {**PY_ITERATIONS, "strength": "=1.0"}),
+    "o3d_trianglemesh_create_ellipsoid": ("TriangleMesh", None, {"radius_x": "=1.0", "radius_y": "=1.0", "radius_z": "=1.0",
+                                                                 "resolution": "=20", "create_uv_map": "=False"}),
+    "o3d_pointcloud_smooth_laplacian": ("PointCloud", None, {"iterations": "=10", "lambda": "lambda_=0.5", "knn": "=20",
+                                                             "use_fixed_neighborhoods": "=False"}),
+    "o3d_pointcloud_smooth_taubin": ("PointCloud", None, {"iterations": "=10", "lambda": "lambda_=0.5", "mu": "=-0.53",
+                                                          "knn": "=20", "use_fixed_neighborhoods": "=False"}),
     "o3d_trianglemesh_sample_points_poisson_disk": ("TriangleMesh", None, {"init_factor": "=5.0", "+pcl": "=None",
                                                                            "use_triangle_normal": "=False", "seed": "=None"}),
     "o3d_lineset_paint_uniform_color": ("LineSet", None, {"rgb": "color"}),

@@ -1,6 +1,7 @@
-"""o3d.geometry: PointCloud, TriangleMesh, TetraMesh, Image, RGBDImage, LineSet, VoxelGrid, Octree, KDTreeFlann,
-KDTreeSearchParam*, AxisAlignedBoundingBox, OrientedBoundingBox, the enums SimplificationContraction,
-FilterScope, ImageFilterType, and the submodule keypoint (compute_iss_keypoints)."""
+"""o3d.geometry: PointCloud, TriangleMesh, TetraMesh, HalfEdgeTriangleMesh (HalfEdge), Image, RGBDImage, LineSet,
+VoxelGrid, Octree, KDTreeFlann, KDTreeSearchParam*, AxisAlignedBoundingBox, OrientedBoundingBox,
+OrientedBoundingEllipsoid, the enums SimplificationContraction, FilterScope, DeformAsRigidAsPossibleEnergy,
+ImageFilterType, and the submodule keypoint (compute_iss_keypoints)."""
 import sys
 import types
 
@@ -11,7 +12,9 @@ from . import _surface_reconstruction  # noqa: F401  (TriangleMesh.create_from_p
 
 from ._o3d import (  # noqa: F401
     ColorToIntensityConversionType,
+    DeformAsRigidAsPossibleEnergy,
     FilterScope,
+    HalfEdgeTriangleMesh,
     Image,
     ImageFilterType,
     RGBDImage,
@@ -124,6 +127,11 @@ class OrientedBoundingBox:
         return OrientedBoundingBox(*_o3d._obb_create_from_points(points, bool(robust)))
 
     @staticmethod
+    def create_from_points_minimal(points, robust=False):
+        """The minimum-volume oriented box of (N, 3) points (N >= 4); robust=True joggles flat sets into a box."""
+        return OrientedBoundingBox(*_o3d._obb_create_from_points_minimal(points, bool(robust)))
+
+    @staticmethod
     def create_from_axis_aligned_bounding_box(aabb_box):
         return OrientedBoundingBox(*_o3d._obb_create_from_axis_aligned_bounding_box(aabb_box.get_min_bound(),
                                                                                    aabb_box.get_max_bound()))
@@ -186,6 +194,125 @@ class OrientedBoundingBox:
 
     def __repr__(self):
         return f"OrientedBoundingBox: center: {tuple(self.center)}, extent: {tuple(self.extent)}"
+
+
+class OrientedBoundingEllipsoid:
+    """The solid {center + R diag(radii) u : |u| <= 1}: semi-axes of lengths ``radii`` along the columns of the
+    rotation ``R`` (as Open3D's). A value: computed by the library, stored here as numpy arrays."""
+
+    def __init__(self, center=None, R=None, radii=None):
+        if isinstance(center, OrientedBoundingEllipsoid):
+            other = center
+            center, R, radii = other.center, other.R, other.radii
+            self.color = np.array(other.color, dtype=np.float64)
+        else:
+            self.color = np.ones(3)
+        if center is None and R is None and radii is None:
+            center, R, radii = np.zeros(3), np.eye(3), np.zeros(3)
+        elif center is None or R is None or radii is None:
+            raise TypeError("OrientedBoundingEllipsoid: give center, R and radii (or nothing)")
+        self.center = np.array(center, dtype=np.float64).reshape(3)
+        self.R = np.array(R, dtype=np.float64).reshape(3, 3)
+        self.radii = np.array(radii, dtype=np.float64).reshape(3)
+
+    @staticmethod
+    def create_from_points(points, robust=False):
+        """The minimum-volume enclosing ellipsoid of (N, 3) points (N >= 4, not coplanar; Khachiyan's algorithm
+        with Open3D's tolerance)."""
+        return OrientedBoundingEllipsoid(*_o3d._obe_create_from_points(points, bool(robust)))
+
+    def get_center(self):
+        return self.center.copy()
+
+    def volume(self):
+        return float(4.0 / 3.0 * np.pi * np.prod(self.radii))
+
+    def is_empty(self):
+        return self.volume() <= 0.0
+
+    def _half_widths(self):
+        # the support of the ellipsoid along each axis: |R diag(radii)| row norms
+        return np.sqrt(((self.R * self.radii) ** 2).sum(axis=1))
+
+    def get_min_bound(self):
+        return self.center - self._half_widths()
+
+    def get_max_bound(self):
+        return self.center + self._half_widths()
+
+    def get_axis_aligned_bounding_box(self):
+        return AxisAlignedBoundingBox(self.get_min_bound(), self.get_max_bound())
+
+    def get_oriented_bounding_box(self, robust=False):
+        """The box of edges 2 * radii along R's columns (the ellipsoid's tight oriented box)."""
+        return OrientedBoundingBox(self.center, self.R, 2.0 * self.radii)
+
+    def translate(self, translation, relative=True):
+        t = np.asarray(translation, dtype=np.float64).reshape(3)
+        self.center = self.center + t if relative else t.copy()
+        return self
+
+    def rotate(self, R, center=None):
+        R = np.asarray(R, dtype=np.float64).reshape(3, 3)
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        self.center = R @ (self.center - c) + c
+        self.R = R @ self.R
+        return self
+
+    def scale(self, scale, center=None):
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        self.radii = self.radii * scale
+        self.center = scale * (self.center - c) + c
+        return self
+
+    def __repr__(self):
+        return f"OrientedBoundingEllipsoid: center: {tuple(self.center)}, radii: {tuple(self.radii)}"
+
+
+class HalfEdge:
+    """One half-edge of a HalfEdgeTriangleMesh: next (the next half-edge of its triangle), twin (the opposite
+    half-edge, -1 on a boundary), vertex_indices (from, to) and triangle_index (as Open3D's)."""
+
+    def __init__(self, other=None):
+        if other is None:
+            self.next, self.twin, self.triangle_index = -1, -1, -1
+            self.vertex_indices = np.array([-1, -1], dtype=np.int32)
+        else:
+            self.next, self.twin, self.triangle_index = other.next, other.twin, other.triangle_index
+            self.vertex_indices = np.array(other.vertex_indices, dtype=np.int32).reshape(2)
+
+    def is_boundary(self):
+        return self.twin == -1
+
+    def __repr__(self):
+        a, b = (int(i) for i in self.vertex_indices)
+        return (f"HalfEdge(vertex_indices {{{a}, {b}}}, triangle_index {self.triangle_index}, next {self.next}, "
+                f"twin {self.twin})")
+
+
+def _half_edges(self):
+    """The half-edges (a new list of HalfEdge on each access, as Open3D's); half-edge 3t + k is side k of triangle
+    t."""
+    out = []
+    for nxt, twin, a, b, t in self._half_edge_array().tolist():
+        h = HalfEdge()
+        h.next, h.twin, h.triangle_index = nxt, twin, t
+        h.vertex_indices = np.array([a, b], dtype=np.int32)
+        out.append(h)
+    return out
+
+
+def _half_edge_mesh_bound(self, which):
+    v = self.vertices
+    return getattr(v, which)(axis=0) if len(v) else np.zeros(3)
+
+
+HalfEdgeTriangleMesh.half_edges = property(_half_edges)
+HalfEdgeTriangleMesh.get_min_bound = lambda self: _half_edge_mesh_bound(self, "min")
+HalfEdgeTriangleMesh.get_max_bound = lambda self: _half_edge_mesh_bound(self, "max")
+HalfEdgeTriangleMesh.get_center = lambda self: _half_edge_mesh_bound(self, "mean")
+HalfEdgeTriangleMesh.get_axis_aligned_bounding_box = lambda self: AxisAlignedBoundingBox(self.get_min_bound(),
+                                                                                         self.get_max_bound())
 
 
 class Voxel:
@@ -294,5 +421,7 @@ Image.__reduce__ = _image_reduce
 __all__ = ["PointCloud", "TriangleMesh", "TetraMesh", "Image", "RGBDImage", "SimplificationContraction", "FilterScope",
            "ImageFilterType", "ColorToIntensityConversionType", "KDTreeFlann", "KDTreeSearchParam",
            "KDTreeSearchParamKNN", "KDTreeSearchParamRadius", "KDTreeSearchParamHybrid", "AxisAlignedBoundingBox",
-           "OrientedBoundingBox", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo", "OctreeLeafNode",
+           "OrientedBoundingBox", "OrientedBoundingEllipsoid", "HalfEdgeTriangleMesh", "HalfEdge",
+           "DeformAsRigidAsPossibleEnergy", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo",
+           "OctreeLeafNode",
            "OctreePointColorLeafNode", "keypoint"]

@@ -26,6 +26,9 @@ using OctreePtr = std::shared_ptr<OctreeHandle>;
 struct PyTriangleMesh : Geom<o3d_trianglemesh_t> {
     using Geom::Geom;
     PyTriangleMesh();
+    /// Open3D's adjacency_list (compute_adjacency_list fills it): per vertex its neighbours, ascending. Held by the
+    /// Python object, not the C mesh, as Open3D holds it beside the arrays.
+    std::vector<std::vector<int32_t>> adjacency;
 };
 
 /// o3d.geometry.Image. No C call resizes an image in place, so the pixel memory is fixed for the
@@ -133,6 +136,51 @@ py::array_t<double> rows3_f64(py::handle obj, const char* what);
 /// Python list of int from int32 values.
 py::list int_list(const int32_t* v, size_t n);
 
+/// An o3d_index_lists_t the binding owns (destroyed with it).
+using IndexLists = std::unique_ptr<o3d_index_lists_t, void (*)(o3d_index_lists_t*)>;
+inline IndexLists own_lists(o3d_index_lists_t* lists) { return IndexLists(lists, &o3d_index_lists_destroy); }
+/// The rows of index lists, copied out (call without the GIL): offsets (num_lists + 1) and values.
+struct IndexRows {
+    std::vector<int64_t> offsets{0};
+    std::vector<int32_t> values;
+    size_t size() const { return offsets.size() - 1; }
+};
+o3d_status read_index_lists(IndexRows& out, const o3d_index_lists_t* lists);
+/// Index lists as Open3D's Python shows them: a list of sets of int (adjacency_list), or a list of (n_i,) int32
+/// numpy arrays (Open3D's List[IntVector]).
+py::list index_rows_to_python(const IndexRows& rows, bool as_sets);
+/// read_index_lists + index_rows_to_python of an owned handle (raises on failure).
+py::list index_lists_to_python(const IndexLists& lists, bool as_sets);
+/// Rows of `cols` values a C call copies out (`f(out, capacity, &count, handle)`, capacity and count in rows), under
+/// the handle's shared lock with the GIL released: first into `guess` rows, again at the reported size when short.
+template <typename T, typename H, typename F>
+std::vector<T> read_rows(const std::shared_ptr<H>& h, size_t cols, size_t guess, F&& f) {
+    std::vector<T> buf(guess * cols);
+    size_t n = 0;
+    locked_const(h, [&](auto p) {
+        o3d_status s = f(buf.empty() ? nullptr : buf.data(), guess, &n, p);
+        if (s == O3D_ERROR_BUFFER_TOO_SMALL || (s == O3D_OK && n > guess)) {
+            o3d_clear_error();
+            buf.resize(n * cols);
+            s = f(buf.empty() ? nullptr : buf.data(), n, &n, p);
+        }
+        return s;
+    });
+    buf.resize(n * cols);
+    return buf;
+}
+/// A numpy array of `shape` holding a copy of `v` (its size must be the shape's); read-only unless `writable`.
+template <typename T>
+py::array to_numpy(const std::vector<T>& v, std::vector<py::ssize_t> shape, bool writable = true) {
+    py::array_t<T> a(shape);
+    if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(T));
+    if (!writable) a.attr("setflags")(py::arg("write") = false);
+    return std::move(a);
+}
+/// Ellipsoids are the pure-Python o3d.geometry.OrientedBoundingEllipsoid (center, R, radii).
+o3d_obe_t obe_of(py::handle ellipsoid);
+py::object make_obe(const o3d_obe_t& obe);
+
 void declare_trianglemesh(py::module_& m);
 void declare_trianglemesh_enums(py::module_& m);
 void declare_image(py::module_& m);
@@ -151,5 +199,8 @@ void define_hull(py::module_& m);
 void define_lineset(py::module_& m);
 void define_voxelgrid(py::module_& m);
 void define_octree(py::module_& m);
+void declare_halfedgemesh(py::module_& m);
+void define_halfedgemesh(py::module_& m);
+void define_geometry_algorithms(py::module_& m);
 
 }  // namespace o3dpy

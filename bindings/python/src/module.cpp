@@ -41,6 +41,7 @@ PYBIND11_MODULE(_o3d, m) {
     o::declare_lineset(m);
     o::declare_voxelgrid(m);
     o::declare_octree(m);
+    o::declare_halfedgemesh(m);
     o::declare_visualization(m);
     o::declare_visualizer(m);
 
@@ -71,4 +72,6 @@ PYBIND11_MODULE(_o3d, m) {
     o::define_tetramesh(m);
     o::define_surface_reconstruction(m);
     o::define_keypoint(m);
+    o::define_geometry_algorithms(m);
+    o::define_halfedgemesh(m);
 }

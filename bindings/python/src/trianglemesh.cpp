@@ -24,7 +24,9 @@ size_t count(const PyTriangleMesh& self, bool triangles) {
 PyTriangleMesh clone_of(const PyTriangleMesh& self) {
     o3d_trianglemesh_t* out = nullptr;
     locked_const(self.h, [&](const o3d_trianglemesh_t* m) { return o3d_trianglemesh_clone(&out, m); });
-    return PyTriangleMesh(out);
+    PyTriangleMesh copy(out);
+    copy.adjacency = self.adjacency;
+    return copy;
 }
 
 void append_into(const MeshPtr& dst, MeshPtr src) {

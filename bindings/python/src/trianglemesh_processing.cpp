@@ -33,6 +33,7 @@ PyTriangleMesh primitive(F&& f) {
 void declare_trianglemesh_enums(py::module_& m) {
     def_enum<SimplificationContraction>(m);
     def_enum<FilterScope>(m);
+    def_enum<DeformAsRigidAsPossibleEnergy>(m);
 }
 
 void define_trianglemesh_processing(py::module_& m) {

@@ -178,6 +178,26 @@ void def_point_cloud_methods(py::class_<Self, Bases...>& cls) {
             return self_;
         },
         "Remove points equal to an earlier point (coordinate for coordinate); their normals, colors and covariances go with them. Returns self.");
+    cls.def(
+        "smooth_laplacian",
+        [](const Self& self, int64_t iterations, double lambda, int64_t knn, bool use_fixed_neighborhoods) {
+            const int32_t iterations_ = int32_of(iterations, "iterations");
+            const int32_t knn_ = int32_of(knn, "knn");
+            o3d_pointcloud_t* out = nullptr;
+            locked_const(self.h, [&](const o3d_pointcloud_t* c_) { return o3d_pointcloud_smooth_laplacian(&out, c_, iterations_, lambda, knn_, use_fixed_neighborhoods ? 1 : 0); });
+            return PyPointCloud(out);
+        },
+        py::arg("iterations") = 10, py::arg("lambda_") = 0.5, py::arg("knn") = 20, py::arg("use_fixed_neighborhoods") = false, "Graph-Laplacian smoothing: `iterations` times, x_i += lambda * (mean of its `knn` nearest other points - x_i), every point from the previous iteration; the kNN graph is rebuilt each time unless `use_fixed_neighborhoods`. Normals and colors are kept.");
+    cls.def(
+        "smooth_taubin",
+        [](const Self& self, int64_t iterations, double lambda, double mu, int64_t knn, bool use_fixed_neighborhoods) {
+            const int32_t iterations_ = int32_of(iterations, "iterations");
+            const int32_t knn_ = int32_of(knn, "knn");
+            o3d_pointcloud_t* out = nullptr;
+            locked_const(self.h, [&](const o3d_pointcloud_t* c_) { return o3d_pointcloud_smooth_taubin(&out, c_, iterations_, lambda, mu, knn_, use_fixed_neighborhoods ? 1 : 0); });
+            return PyPointCloud(out);
+        },
+        py::arg("iterations") = 10, py::arg("lambda_") = 0.5, py::arg("mu") = -0.53, py::arg("knn") = 20, py::arg("use_fixed_neighborhoods") = false, "Taubin smoothing: per iteration a Laplacian pass with `lambda_`, then one with `mu` (negative: it undoes the shrinking). Otherwise as o3d_pointcloud_smooth_laplacian.");
 }
 
 }  // namespace o3dpy

@@ -105,6 +105,16 @@ inline py::enum_<FilterScope> def_enum<FilterScope>(py::handle scope) {
     return e;
 }
 
+/// The energy deform_as_rigid_as_possible minimises (O3D_ARAP_ENERGY_*; Open3D's DeformAsRigidAsPossibleEnergy).
+enum class DeformAsRigidAsPossibleEnergy : int32_t { Spokes = O3D_ARAP_ENERGY_SPOKES, Smoothed = O3D_ARAP_ENERGY_SMOOTHED };
+template <>
+inline py::enum_<DeformAsRigidAsPossibleEnergy> def_enum<DeformAsRigidAsPossibleEnergy>(py::handle scope) {
+    py::enum_<DeformAsRigidAsPossibleEnergy> e(scope, "DeformAsRigidAsPossibleEnergy", "The energy deform_as_rigid_as_possible minimises (O3D_ARAP_ENERGY_*; Open3D's DeformAsRigidAsPossibleEnergy).");
+    e.value("Spokes", DeformAsRigidAsPossibleEnergy::Spokes, "Sorkine & Alexa 2007: the spokes of each vertex's one-ring.");
+    e.value("Smoothed", DeformAsRigidAsPossibleEnergy::Smoothed, "Spokes plus the rotation smoothness of Levi & Gotsman 2015.");
+    return e;
+}
+
 /// RenderOption.mesh_shade_option (Open3D's MeshShadeOption; O3D_MESH_SHADE_*).
 enum class MeshShadeOption : int32_t { FlatShade = O3D_MESH_SHADE_FLAT, SmoothShade = O3D_MESH_SHADE_SMOOTH };
 template <>
@@ -273,6 +283,21 @@ struct Fields<o3d_iss_options_t> {
         f("gamma_32", &o3d_iss_options_t::gamma_32, As<double>{}, "Upper bound on lambda3 / lambda2, in (0, 1]; default 0.975.");
         f("min_neighbors", &o3d_iss_options_t::min_neighbors, As<int32_t>{}, "Fewer neighbours than this: not a keypoint; default 5.");
         f("num_threads", &o3d_iss_options_t::num_threads, As<int32_t>{}, "0 = library default; the result does not depend on it.");
+    }
+};
+
+/// o3d_planar_patch_options_t (pointcloud.h): Options of o3d_pointcloud_detect_planar_patches (Open3D's keywords and defaults).
+template <>
+struct Fields<o3d_planar_patch_options_t> {
+    template <typename F>
+    static void each(F&& f) {
+        f("normal_variance_threshold_deg", &o3d_planar_patch_options_t::normal_variance_threshold_deg, As<double>{}, "Largest spread of the normals in a patch, in (0, 90]; default 60.");
+        f("coplanarity_deg", &o3d_planar_patch_options_t::coplanarity_deg, As<double>{}, "Flatness: a larger angle asks a flatter patch, in (0, 90]; default 75.");
+        f("outlier_ratio", &o3d_planar_patch_options_t::outlier_ratio, As<double>{}, "Largest share of outliers in a patch, in [0, 1); default 0.75.");
+        f("min_plane_edge_length", &o3d_planar_patch_options_t::min_plane_edge_length, As<double>{}, "Shortest long edge kept (0: 1% of the cloud's largest extent); default 0.");
+        f("min_num_points", &o3d_planar_patch_options_t::min_num_points, As<int32_t>{}, "Fewest points in a patch (0: max(10, N / 1000)); default 0.");
+        f("search_param", &o3d_planar_patch_options_t::search_param, As<o3d_search_param_t>{}, "The neighbourhood that grows patches; default KNN 30.");
+        f("num_threads", &o3d_planar_patch_options_t::num_threads, As<int32_t>{}, "0 = the library default; default 0.");
     }
 };
 

@@ -414,6 +414,41 @@ void def_triangle_mesh_methods(py::class_<Self, Bases...>& cls) {
             return PyTriangleMesh(out);
         },
         py::arg("radius") = 1.0, py::arg("create_uv_map") = false, "Regular icosahedron inscribed in a sphere of `radius` (default 1).");
+    cls.def(
+        "is_intersecting",
+        [](const Self& self, const PyTriangleMesh& other) {
+            const auto other_ = other.h;
+            int32_t out = 0;
+            locked_const(self.h, [&](const o3d_trianglemesh_t* c_) { std::shared_lock<std::shared_mutex> other_lock(other_->mutex); return o3d_trianglemesh_is_intersecting(&out, c_, other_->p); });
+            return out != 0;
+        },
+        py::arg("other"), "Whether any triangle of `mesh` intersects any triangle of `other` (touching counts).");
+    cls.def(
+        "orient_triangles",
+        [](Self& self) {
+            int32_t out = 0;
+            locked_mut(self.h, [&](o3d_trianglemesh_t* c_) { return o3d_trianglemesh_orient_triangles(&out, c_); });
+            return out != 0;
+        },
+        "Turn triangles over so that every edge shared by two triangles is walked once each way (Open3D's orient_triangles); in each connected part the lowest-index triangle keeps its winding, and the normals of the turned triangles are negated. A mesh that cannot be oriented (a Moebius strip, an edge of three triangles) is left unchanged and gives 0.");
+    cls.def(
+        "filter_sharpen",
+        [](const Self& self, int64_t number_of_iterations, double strength, FilterScope filter_scope) {
+            const int32_t number_of_iterations_ = int32_of(number_of_iterations, "number_of_iterations");
+            o3d_trianglemesh_t* out = nullptr;
+            locked_const(self.h, [&](const o3d_trianglemesh_t* c_) { return o3d_trianglemesh_filter_sharpen(&out, c_, number_of_iterations_, strength, (int32_t)filter_scope); });
+            return PyTriangleMesh(out);
+        },
+        py::arg("number_of_iterations") = 1, py::arg("strength") = 1.0, py::arg("filter_scope") = FilterScope::All, "Sharpening: `number_of_iterations` times, v += strength * sum over its neighbours (v - neighbour), for the attributes `filter_scope` selects (Open3D's filter_sharpen; colors are not clamped, as there). Otherwise as o3d_trianglemesh_filter_smooth_simple.");
+    cls.def_static(
+        "create_ellipsoid",
+        [](double radius_x, double radius_y, double radius_z, int64_t resolution, bool create_uv_map) {
+            const int32_t resolution_ = int32_of(resolution, "resolution");
+            o3d_trianglemesh_t* out = nullptr;
+            check(nogil([&] { return o3d_trianglemesh_create_ellipsoid(&out, radius_x, radius_y, radius_z, resolution_, create_uv_map ? 1 : 0); }));
+            return PyTriangleMesh(out);
+        },
+        py::arg("radius_x") = 1.0, py::arg("radius_y") = 1.0, py::arg("radius_z") = 1.0, py::arg("resolution") = 20, py::arg("create_uv_map") = false, "An ellipsoid centred at the origin with semi-axes `radius_x`, `radius_y`, `radius_z` along x, y, z: the vertices and triangles of Open3D's create_ellipsoid (2 poles and resolution - 1 rings of 2 * resolution vertices), wound outwards.");
 }
 
 }  // namespace o3dpy

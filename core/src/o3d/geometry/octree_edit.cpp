@@ -17,19 +17,6 @@ void check_depth(int max_depth) {
                                    std::to_string(max_depth) + ")");
 }
 
-/// The child of cube (origin, size) holding `p`, numbered x + 2y + 4z (bit set: upper half), as
-/// octree_ops.cpp descends; moves origin and size to that child's cube.
-int descend(const Eigen::Vector3d& p, Eigen::Vector3d& origin, double& size) {
-    const double half = size / 2.0;
-    int child = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (p(axis) < origin(axis) + half) continue;
-        child |= 1 << axis;
-        origin(axis) += half;
-    }
-    size = half;
-    return child;
-}
 
 void visit_node(const Octree& tree, int node, const OctreeNodeInfo& info, const OctreeVisitor& visit) {
     const OctreeNode& n = tree.nodes[node];
@@ -79,22 +66,7 @@ bool octree_insert_point(Octree& tree, const Eigen::Vector3d& point, int index, 
         throw o3d::InvalidArgument("the octree's origin and size must be finite");
     if (!is_point_in_bound(point, tree.origin, tree.size)) return false;
 
-    if (tree.nodes.empty()) tree.nodes.emplace_back();
-    Eigen::Vector3d origin = tree.origin;
-    double size = tree.size;
-    int node = 0;
-    for (int depth = 0; depth < tree.max_depth; ++depth) {
-        const int child = descend(point, origin, size);
-        int next = tree.nodes[node].children[child];
-        if (next < 0) {
-            next = static_cast<int>(tree.nodes.size());
-            tree.nodes[node].children[child] = next;
-            tree.nodes.emplace_back();  // invalidates references into nodes: index only
-        }
-        node = next;
-    }
-    OctreeNode& leaf = tree.nodes[node];
-    leaf.is_leaf = true;
+    OctreeNode& leaf = tree.nodes[leaf_path(tree, point)];
     const auto at = std::lower_bound(leaf.indices.begin(), leaf.indices.end(), index);
     if (at != leaf.indices.end() && *at == index) return true;
     const double n = static_cast<double>(leaf.indices.size());

@@ -15,8 +15,8 @@ bool in_cube(const Eigen::Vector3d& p, const Eigen::Vector3d& origin, double siz
     return (p.array() >= origin.array()).all() && (p.array() < origin.array() + size).all();
 }
 
-/// The child of the cube (origin, size) that holds `p`: numbered x + 2y + 4z, each bit set when `p` is in
-/// the upper half along that axis (Open3D's numbering). Moves `origin` and `size` to the child's cube.
+}  // namespace
+
 int descend(const Eigen::Vector3d& p, Eigen::Vector3d& origin, double& size) {
     const double half = size / 2.0;
     int child = 0;
@@ -29,7 +29,24 @@ int descend(const Eigen::Vector3d& p, Eigen::Vector3d& origin, double& size) {
     return child;
 }
 
-}  // namespace
+int leaf_path(Octree& tree, const Eigen::Vector3d& point) {
+    if (tree.nodes.empty()) tree.nodes.emplace_back();
+    Eigen::Vector3d origin = tree.origin;
+    double size = tree.size;
+    int node = 0;
+    for (int depth = 0; depth < tree.max_depth; ++depth) {
+        const int child = descend(point, origin, size);
+        int next = tree.nodes[node].children[child];
+        if (next < 0) {
+            next = static_cast<int>(tree.nodes.size());
+            tree.nodes[node].children[child] = next;
+            tree.nodes.emplace_back();  // invalidates references into nodes: index only
+        }
+        node = next;
+    }
+    tree.nodes[node].is_leaf = true;
+    return node;
+}
 
 Octree make_octree(int max_depth) {
     if (max_depth < 1 || max_depth > kMaxOctreeDepth)
@@ -65,21 +82,7 @@ void octree_from_point_cloud(Octree& tree, const PointCloud& cloud, double size_
     for (size_t i = 0; i < cloud.points.size(); ++i) {
         const Eigen::Vector3d& p = cloud.points[i];
         if (!in_cube(p, tree.origin, tree.size)) continue;  // Open3D drops these too (size_expand = 0)
-        Eigen::Vector3d origin = tree.origin;
-        double size = tree.size;
-        int node = 0;
-        for (int depth = 0; depth < tree.max_depth; ++depth) {
-            const int child = descend(p, origin, size);
-            int next = tree.nodes[node].children[child];
-            if (next < 0) {
-                next = static_cast<int>(tree.nodes.size());
-                tree.nodes[node].children[child] = next;
-                tree.nodes.emplace_back();  // invalidates references into nodes: index only
-            }
-            node = next;
-        }
-        OctreeNode& leaf = tree.nodes[node];
-        leaf.is_leaf = true;
+        OctreeNode& leaf = tree.nodes[leaf_path(tree, p)];
         leaf.indices.push_back(static_cast<int>(i));
         if (colored) leaf.color += cloud.colors[i];  // a sum until the pass below
     }

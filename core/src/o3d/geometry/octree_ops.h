@@ -36,6 +36,12 @@ struct OctreeNodeInfo {
 /// outside the root cube or in an empty cell.
 int locate_leaf(const Octree& tree, const Eigen::Vector3d& point, OctreeNodeInfo* info);
 
+/// @brief The child of the cube (origin, size) that holds `p`: numbered x + 2y + 4z, each bit set when `p` is
+/// in the upper half along that axis (Open3D's numbering). Moves `origin` and `size` to the child's cube.
+int descend(const Eigen::Vector3d& p, Eigen::Vector3d& origin, double& size);
+/// @brief The leaf at max depth whose cube holds `point` (which the caller has checked is inside the root
+/// cube), made with the internal nodes on the way when missing; its index in tree.nodes.
+int leaf_path(Octree& tree, const Eigen::Vector3d& point);
 /// @brief Number of leaves (all are non-empty).
 size_t count_leaves(const Octree& tree);
 

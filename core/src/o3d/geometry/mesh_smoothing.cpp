@@ -8,22 +8,16 @@
 #include <vector>
 
 #include "o3d/geometry/mesh_adjacency.h"
+#include "o3d/geometry/mesh_filter_detail.h"
 #include "o3d/geometry/mesh_normals_util.h"
 #include "o3d/geometry/triangle_mesh_basics.h"
 #include "o3d/utility/error.h"
 #include "o3d/utility/parallel.h"
 
 namespace o3d::geometry {
-namespace {
+namespace detail {
 
-/// @brief One smoothing step: the plain mean of a vertex and its neighbours (simple), or a Laplacian step
-/// of size lambda towards the inverse-distance-weighted mean of the neighbours.
-struct Step {
-    bool simple;
-    double lambda;
-};
-
-void check_common(const TriangleMesh& mesh, int number_of_iterations, FilterScope scope) {
+void check_filter_input(const TriangleMesh& mesh, int number_of_iterations, FilterScope scope) {
     validate_triangles(mesh);
     if (mesh.vertices.empty()) throw InvalidArgument("the mesh has no vertices");
     if (number_of_iterations < 0)
@@ -32,12 +26,19 @@ void check_common(const TriangleMesh& mesh, int number_of_iterations, FilterScop
     if (s < 0 || s > 3) throw InvalidArgument("unknown filter scope " + std::to_string(s) + " (expected 0..3)");
 }
 
+}  // namespace detail
+namespace {
+
 void check_finite(double x, const char* name) {
     if (!std::isfinite(x)) throw InvalidArgument(std::string(name) + " must be finite, got " + std::to_string(x));
 }
 
-TriangleMesh smooth(const TriangleMesh& mesh, int number_of_iterations, const std::vector<Step>& steps,
-                    FilterScope scope, int num_threads) {
+}  // namespace
+
+namespace detail {
+
+TriangleMesh apply_vertex_filter(const TriangleMesh& mesh, int number_of_iterations, const std::vector<FilterStep>& steps,
+                                 FilterScope scope, int num_threads) {
     TriangleMesh out = mesh;
     const bool positions = scope == FilterScope::All || scope == FilterScope::Vertex;
     const bool normals = (scope == FilterScope::All || scope == FilterScope::Normal) && mesh.has_vertex_normals();
@@ -50,7 +51,7 @@ TriangleMesh smooth(const TriangleMesh& mesh, int number_of_iterations, const st
     // Every vertex of a step reads the previous state only: double buffers, swapped after each step.
     std::vector<Eigen::Vector3d> next_p = out.vertices, next_n = out.vertex_normals, next_c = out.vertex_colors;
     for (int it = 0; it < number_of_iterations; ++it) {
-        for (const Step& step : steps) {
+        for (const FilterStep& step : steps) {
             const std::vector<Eigen::Vector3d>& p = out.vertices;
             const std::vector<Eigen::Vector3d>& n = out.vertex_normals;
             const std::vector<Eigen::Vector3d>& c = out.vertex_colors;
@@ -60,7 +61,8 @@ TriangleMesh smooth(const TriangleMesh& mesh, int number_of_iterations, const st
                 Eigen::Vector3d sum_p = Eigen::Vector3d::Zero(), sum_n = sum_p, sum_c = sum_p;
                 double total = 0;
                 for (const int* j = around.begin(v); j != around.end(v); ++j) {
-                    const double w = step.simple ? 1.0 : 1.0 / ((p[v] - p[*j]).norm() + 1e-12);
+                    const double w =
+                        step.kind == FilterStepKind::Laplacian ? 1.0 / ((p[v] - p[*j]).norm() + 1e-12) : 1.0;
                     total += w;
                     if (positions) sum_p += w * p[*j];
                     if (normals) sum_n += w * n[*j];
@@ -72,15 +74,19 @@ TriangleMesh smooth(const TriangleMesh& mesh, int number_of_iterations, const st
                     if (colors) next_c[v] = c[v];
                     continue;
                 }
-                if (step.simple) {
+                if (step.kind == FilterStepKind::Sharpen) {  // v + strength (|N| v - sum), in Open3D's order
+                    if (positions) next_p[v] = p[v] + step.weight * (p[v] * total - sum_p);
+                    if (normals) next_n[v] = n[v] + step.weight * (n[v] * total - sum_n);
+                    if (colors) next_c[v] = c[v] + step.weight * (c[v] * total - sum_c);
+                } else if (step.kind == FilterStepKind::Mean) {
                     const double inv = 1.0 / (1.0 + total);
                     if (positions) next_p[v] = (p[v] + sum_p) * inv;
                     if (normals) next_n[v] = (n[v] + sum_n) * inv;
                     if (colors) next_c[v] = (c[v] + sum_c) * inv;
                 } else {
-                    if (positions) next_p[v] = p[v] + step.lambda * (sum_p / total - p[v]);
-                    if (normals) next_n[v] = n[v] + step.lambda * (sum_n / total - n[v]);
-                    if (colors) next_c[v] = c[v] + step.lambda * (sum_c / total - c[v]);
+                    if (positions) next_p[v] = p[v] + step.weight * (sum_p / total - p[v]);
+                    if (normals) next_n[v] = n[v] + step.weight * (sum_n / total - n[v]);
+                    if (colors) next_c[v] = c[v] + step.weight * (sum_c / total - c[v]);
                 }
             }
             if (positions) std::swap(out.vertices, next_p);
@@ -92,27 +98,32 @@ TriangleMesh smooth(const TriangleMesh& mesh, int number_of_iterations, const st
     return out;
 }
 
-}  // namespace
+}  // namespace detail
 
 TriangleMesh filter_smooth_simple(const TriangleMesh& mesh, int number_of_iterations, FilterScope scope,
                                   int num_threads) {
-    check_common(mesh, number_of_iterations, scope);
-    return smooth(mesh, number_of_iterations, {Step{true, 0.0}}, scope, num_threads);
+    detail::check_filter_input(mesh, number_of_iterations, scope);
+    return detail::apply_vertex_filter(mesh, number_of_iterations, {{detail::FilterStepKind::Mean, 0.0}}, scope,
+                                      num_threads);
 }
 
 TriangleMesh filter_smooth_laplacian(const TriangleMesh& mesh, int number_of_iterations, double lambda_filter,
                                      FilterScope scope, int num_threads) {
-    check_common(mesh, number_of_iterations, scope);
+    detail::check_filter_input(mesh, number_of_iterations, scope);
     check_finite(lambda_filter, "lambda_filter");
-    return smooth(mesh, number_of_iterations, {Step{false, lambda_filter}}, scope, num_threads);
+    return detail::apply_vertex_filter(mesh, number_of_iterations, {{detail::FilterStepKind::Laplacian, lambda_filter}},
+                                      scope, num_threads);
 }
 
 TriangleMesh filter_smooth_taubin(const TriangleMesh& mesh, int number_of_iterations, double lambda_filter,
                                   double mu, FilterScope scope, int num_threads) {
-    check_common(mesh, number_of_iterations, scope);
+    detail::check_filter_input(mesh, number_of_iterations, scope);
     check_finite(lambda_filter, "lambda_filter");
     check_finite(mu, "mu");
-    return smooth(mesh, number_of_iterations, {Step{false, lambda_filter}, Step{false, mu}}, scope, num_threads);
+    return detail::apply_vertex_filter(
+        mesh, number_of_iterations,
+        {{detail::FilterStepKind::Laplacian, lambda_filter}, {detail::FilterStepKind::Laplacian, mu}}, scope,
+        num_threads);
 }
 
 }  // namespace o3d::geometry

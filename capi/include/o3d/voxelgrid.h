@@ -203,8 +203,9 @@ O3D_API o3d_status o3d_voxelgrid_check_if_included(int32_t* out_included, size_t
 O3D_API o3d_status o3d_voxelgrid_create_dense(o3d_voxelgrid_t** out, const double origin[3], const double color[3],
                                               double voxel_size, double width, double height, double depth);
 /**
- * @brief Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's
- * VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+ * @brief Voxels of the triangles that touch them (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds), on the
+ * grid whose origin is `min_bound`, keeping only cells (i, j, k) with 0 <= index <= floor((max_bound - min_bound) /
+ * voxel_size) on each axis (Open3D ignores `max_bound` and may also make cells at negative indices).
  *
  * Threads: any thread; concurrent calls on the same handles are safe (all read-only).
  * Ownership: `*out` is the caller's, to free with o3d_voxelgrid_destroy(); left NULL on failure.

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "o3d/geometry/radix_sort.h"
+#include "o3d/geometry/triangle_box_grid.h"
 #include "o3d/geometry/triangle_mesh_basics.h"
 #include "o3d/utility/parallel.h"
 
@@ -90,17 +90,6 @@ bool all_one_side(const Eigen::Vector3d& n, const Eigen::Vector3d& origin, const
     return (d[0] > 0 && d[1] > 0 && d[2] > 0) || (d[0] < 0 && d[1] < 0 && d[2] < 0);
 }
 
-struct Box {
-    Eigen::Vector3d lo, hi;
-};
-
-bool share_vertex(const Eigen::Vector3i& a, const Eigen::Vector3i& b) {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (a(i) == b(j)) return true;
-    return false;
-}
-
 }  // namespace
 
 bool triangles_intersect(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
@@ -130,103 +119,21 @@ bool triangles_intersect(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, c
 
 bool is_self_intersecting(const TriangleMesh& mesh) {
     validate_triangles(mesh);
-    const size_t m = mesh.triangles.size();
-    std::vector<Box> boxes(m);
-    std::vector<int> active;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-    double extent_sum = 0;
-    for (size_t t = 0; t < m; ++t) {
-        const Eigen::Vector3i& tri = mesh.triangles[t];
-        const Eigen::Vector3d &a = mesh.vertices[tri(0)], &b = mesh.vertices[tri(1)], &c = mesh.vertices[tri(2)];
-        if (!a.allFinite() || !b.allFinite() || !c.allFinite()) continue;
-        if (!(triangle_cross(mesh, t).squaredNorm() > 0)) continue;
-        boxes[t] = {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
-        lo = lo.cwiseMin(boxes[t].lo);
-        hi = hi.cwiseMax(boxes[t].hi);
-        extent_sum += (boxes[t].hi - boxes[t].lo).maxCoeff();
-        active.push_back(static_cast<int>(t));
-    }
-    if (active.size() < 2) return false;
-
-    // Uniform grid with cells about the size of a triangle; each triangle goes into every cell its box
-    // touches. Cells grow until the grid holds at most ~16 entries per triangle.
-    const Eigen::Vector3d extent = hi - lo;
-    double cell = std::max(extent_sum / static_cast<double>(active.size()), extent.maxCoeff() / double(1 << 20));
-    Eigen::Array3i dims;
-    // Clamped so that overflowing extents (coordinates near DBL_MAX) give NaN or infinity, never UB.
-    auto cell_index = [&](double offset, int k) {
-        const double q = offset / cell;
-        return q >= 0 && q < dims(k) ? static_cast<int>(q) : (q >= dims(k) ? dims(k) - 1 : 0);
-    };
-    auto cell_range = [&](const Box& box, Eigen::Array3i& from, Eigen::Array3i& to) {
-        for (int k = 0; k < 3; ++k) {
-            from(k) = cell_index(box.lo(k) - lo(k), k);
-            to(k) = cell_index(box.hi(k) - lo(k), k);
-        }
-    };
-    std::vector<std::pair<uint64_t, size_t>> entries;
-    for (;;) {
-        for (int k = 0; k < 3; ++k) {
-            const double q = std::ceil(extent(k) / cell);
-            dims(k) = q >= 1 && q <= double(1 << 21) ? static_cast<int>(q) : (q > 1 ? 1 << 21 : 1);
-        }
-        size_t total = 0;
-        Eigen::Array3i from, to;
-        for (const int t : active) {
-            cell_range(boxes[t], from, to);
-            total += static_cast<size_t>(to(0) - from(0) + 1) * static_cast<size_t>(to(1) - from(1) + 1) *
-                     static_cast<size_t>(to(2) - from(2) + 1);
-        }
-        if (!(cell < INFINITY)) break;  // one cell (or as few as the clamping allows) holds everything
-        if (total <= 16 * active.size() + 1024) break;
-        cell *= 2;
-    }
-    const uint64_t dx = static_cast<uint64_t>(dims(0)), dy = static_cast<uint64_t>(dims(1));
-    auto key_of = [&](int x, int y, int z) { return (static_cast<uint64_t>(z) * dy + y) * dx + x; };
-    std::vector<Eigen::Array3i> first_cell(m);
-    for (const int t : active) {
-        Eigen::Array3i from, to;
-        cell_range(boxes[t], from, to);
-        first_cell[t] = from;
-        for (int z = from(2); z <= to(2); ++z)
-            for (int y = from(1); y <= to(1); ++y)
-                for (int x = from(0); x <= to(0); ++x) entries.emplace_back(key_of(x, y, z), static_cast<size_t>(t));
-    }
-    int key_bits = 0;
-    for (uint64_t top = dx * dy * static_cast<uint64_t>(dims(2)); top; top >>= 1) ++key_bits;
-    radix_sort_by_key(entries, key_bits);
-    std::vector<size_t> cell_start;
-    for (size_t i = 0; i < entries.size(); ++i)
-        if (i == 0 || entries[i].first != entries[i - 1].first) cell_start.push_back(i);
-    cell_start.push_back(entries.size());
-
+    std::vector<detail::TriangleBox> boxes;
+    detail::add_boxes(mesh, 0, boxes);
+    if (boxes.size() < 2) return false;
+    const detail::BoxGrid grid(boxes);
     // The answer is "does any pair intersect", so the parallel search returns the same for any thread count.
     std::atomic<bool> found{false};
-    const long long num_cells = static_cast<long long>(cell_start.size()) - 1;
-#pragma omp parallel for schedule(dynamic, 64) num_threads(o3d::utility::resolve_num_threads())
-    for (long long c = 0; c < num_cells; ++c) {
-        if (found.load(std::memory_order_relaxed)) continue;
-        const uint64_t key = entries[cell_start[c]].first;
-        const Eigen::Array3i here(static_cast<int>(key % dx), static_cast<int>(key / dx % dy),
-                                  static_cast<int>(key / dx / dy));
-        for (size_t i = cell_start[c]; i < cell_start[c + 1] && !found.load(std::memory_order_relaxed); ++i) {
-            const size_t a = entries[i].second;
-            for (size_t j = i + 1; j < cell_start[c + 1]; ++j) {
-                const size_t b = entries[j].second;
-                // Test each pair once: in the first cell both boxes cover.
-                if ((first_cell[a].max(first_cell[b]) != here).any()) continue;
-                const Box &ba = boxes[a], &bb = boxes[b];
-                if ((ba.hi.array() < bb.lo.array()).any() || (bb.hi.array() < ba.lo.array()).any()) continue;
-                const Eigen::Vector3i &ta = mesh.triangles[a], &tb = mesh.triangles[b];
-                if (share_vertex(ta, tb)) continue;
-                const auto& v = mesh.vertices;
-                if (triangles_intersect(v[ta(0)], v[ta(1)], v[ta(2)], v[tb(0)], v[tb(1)], v[tb(2)])) {
-                    found.store(true, std::memory_order_relaxed);
-                    break;
-                }
-            }
-        }
-    }
+    grid.for_each_overlap(
+        [&](size_t i, size_t j) {
+            const Eigen::Vector3i &ta = mesh.triangles[boxes[i].index], &tb = mesh.triangles[boxes[j].index];
+            if (detail::share_vertex(ta, tb)) return;
+            const auto& v = mesh.vertices;
+            if (triangles_intersect(v[ta(0)], v[ta(1)], v[ta(2)], v[tb(0)], v[tb(1)], v[tb(2)]))
+                found.store(true, std::memory_order_relaxed);
+        },
+        found);
     return found.load();
 }
 

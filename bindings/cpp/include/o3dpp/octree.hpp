@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// @file octree.hpp
-/// @brief o3dpp::Octree (move-only owner of an o3d_octree_t) over a point cloud, with color leaves.
+/// @brief o3dpp::Octree (move-only owner of an o3d_octree_t) over a point cloud or voxel grid, with color leaves.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -11,6 +11,7 @@
 #include "o3dpp/handle.hpp"
 #include "o3dpp/pointcloud.hpp"
 #include "o3dpp/span.hpp"
+#include "o3dpp/voxelgrid.hpp"
 
 namespace o3dpp {
 
@@ -34,8 +35,34 @@ class Octree : public Owner<Octree, o3d_octree_t, &o3d_octree_destroy> {
 public:
     /// @brief Empty octree of depth `max_depth` >= 1.
     explicit Octree(int max_depth) : Owner(make([&](o3d_octree_t** o) { return o3d_octree_create(o, max_depth); })) {}
+    /// @brief Empty octree of depth `max_depth` (1 to 21) over the cube of edge `size` > 0 at `origin`.
+    Octree(int max_depth, const Vec3& origin, double size)
+        : Owner(make([&](o3d_octree_t** o) {
+              return o3d_octree_create_with_bounds(o, max_depth, origin.data(), size);
+          })) {}
     /// @brief Take ownership of `owned` (must not be NULL).
     explicit Octree(o3d_octree_t* owned) : Owner(owned) {}
+
+    /// @brief Whether `point` lies in the half-open cube [origin, origin + size)^3.
+    static bool is_point_in_bound(const Vec3& point, const Vec3& origin, double size) {
+        int32_t in = 0;
+        check(o3d_octree_is_point_in_bound(&in, point.data(), origin.data(), size));
+        return in != 0;
+    }
+    /// @brief Insert point number `index` >= 0 with `color` into the max-depth leaf holding `point` (a color leaf:
+    /// ascending unique indices, the mean color). False, changing nothing, when the point is outside the root cube.
+    bool insert_point(const Vec3& point, int32_t index, const Vec3& color) {
+        int32_t inserted = 0;
+        check(o3d_octree_insert_point(&inserted, get(), point.data(), index, color.data()));
+        return inserted != 0;
+    }
+    /// @brief Rebuild from `grid` (keeping max_depth()): one leaf per voxel centre, with the voxel's color and its
+    /// position in the grid's voxel order.
+    Octree& create_from_voxel_grid(const VoxelGrid& grid) {
+        return done(o3d_octree_create_from_voxel_grid(get(), grid.get()));
+    }
+    /// @brief The grid of the leaves: voxel size = size() / 2^max_depth(), origin at origin(), leaf colors.
+    VoxelGrid to_voxel_grid() const { return VoxelGrid::create_from_octree(*this); }
 
     /// @brief Rebuild from `cloud`: the root is its bounding cube enlarged by `size_expand` (>= 0).
     Octree& convert_from_point_cloud(const PointCloud& cloud, double size_expand = 0.01) {
@@ -74,5 +101,9 @@ public:
         return leaf;
     }
 };
+
+inline VoxelGrid VoxelGrid::create_from_octree(const Octree& octree) {
+    return adopt([&](o3d_voxelgrid_t** out) { return o3d_voxelgrid_create_from_octree(out, octree.get()); });
+}
 
 }  // namespace o3dpp

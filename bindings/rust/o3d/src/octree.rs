@@ -1,4 +1,4 @@
-//! `Octree` (o3d.geometry.Octree with point-and-color leaves) over a point cloud.
+//! `Octree` (o3d.geometry.Octree with point-and-color leaves) over a point cloud or a voxel grid.
 use std::fmt;
 use std::ptr;
 
@@ -7,6 +7,7 @@ use o3d_sys as sys;
 use crate::error::{check, Result};
 use crate::pointcloud::PointCloud;
 use crate::util::handle;
+use crate::voxelgrid::VoxelGrid;
 
 include!("generated/octree.rs");
 
@@ -50,6 +51,21 @@ handle! {
 }
 
 impl Octree {
+    /// Whether `point` lies in the half-open cube `[origin, origin + size)^3` (Open3D's static
+    /// `Octree.is_point_in_bound`).
+    pub fn is_point_in_bound(point: [f64; 3], origin: [f64; 3], size: f64) -> Result<bool> {
+        let mut out = 0i32;
+        // SAFETY: one int out; 3 + 3 doubles in.
+        check(unsafe { sys::o3d_octree_is_point_in_bound(&mut out, point.as_ptr(), origin.as_ptr(), size) })?;
+        Ok(out != 0)
+    }
+
+    /// The voxel grid of the leaves (Open3D's `to_voxel_grid`): voxel size = size / 2^max_depth, origin at
+    /// the octree's origin, one voxel per leaf with its color.
+    pub fn to_voxel_grid(&self) -> Result<VoxelGrid> {
+        VoxelGrid::create_from_octree(self)
+    }
+
     /// The root cube's min corner.
     pub fn origin(&self) -> Result<[f64; 3]> {
         let mut v = [0.0; 3];

@@ -4,10 +4,13 @@ use std::fmt;
 use o3d_sys as sys;
 
 use crate::array::{cols, has};
+use crate::camera::PinholeCameraParameters;
 use crate::error::{check, Error, ErrorCode, Result};
+use crate::image::Image;
+use crate::octree::Octree;
 use crate::pointcloud::PointCloud;
 use crate::trianglemesh::TriangleMesh;
-use crate::util::{copy_out, handle};
+use crate::util::{copy_out, handle, mat4_ptr};
 
 include!("generated/voxelgrid.rs");
 
@@ -23,7 +26,8 @@ pub struct Voxel {
 handle! {
     /// A sparse voxel grid of cubes of edge `voxel_size` starting at `origin`.
     ///
-    /// Owns an `o3d_voxelgrid_t`; immutable once built, so `Send` and `Sync`.
+    /// Owns an `o3d_voxelgrid_t`. `Send` and `Sync`: `&self` methods only make `const` C calls; editing
+    /// (add_voxel, remove_voxel, carving) takes `&mut self`.
     VoxelGrid(sys::o3d_voxelgrid_t, "voxel grid"), new_grid, sys::o3d_voxelgrid_destroy
 }
 
@@ -67,6 +71,88 @@ impl VoxelGrid {
         })?;
         out.truncate(n);
         Ok(out.into_iter().map(|v| v != 0).collect())
+    }
+
+    /// Add `voxel`, replacing the one at its grid index (Open3D's `add_voxel`).
+    pub fn add_voxel(&mut self, voxel: Voxel) -> Result<&mut Self> {
+        // SAFETY: a valid handle; 3 ints and 3 doubles that live for the call.
+        check(unsafe {
+            sys::o3d_voxelgrid_add_voxel(self.raw_mut(), voxel.grid_index.as_ptr(), voxel.color.as_ptr())
+        })?;
+        Ok(self)
+    }
+
+    /// Remove the voxel at `idx`; nothing happens when there is none (Open3D's `remove_voxel`).
+    pub fn remove_voxel(&mut self, idx: [i32; 3]) -> Result<&mut Self> {
+        // SAFETY: a valid handle; 3 ints that live for the call.
+        check(unsafe { sys::o3d_voxelgrid_remove_voxel(self.raw_mut(), idx.as_ptr()) })?;
+        Ok(self)
+    }
+
+    /// The centre of cell `idx`, occupied or not.
+    pub fn get_voxel_center_coordinate(&self, idx: [i32; 3]) -> Result<[f64; 3]> {
+        let mut out = [0.0; 3];
+        // SAFETY: room for 3 doubles; 3 ints in.
+        check(unsafe {
+            sys::o3d_voxelgrid_get_voxel_center_coordinate(out.as_mut_ptr(), self.as_raw(), idx.as_ptr())
+        })?;
+        Ok(out)
+    }
+
+    /// The 8 corners of cell `index` (its centre +- half a voxel), in Open3D's order.
+    pub fn get_voxel_bounding_points(&self, index: [i32; 3]) -> Result<[[f64; 3]; 8]> {
+        let mut out = [[0.0; 3]; 8];
+        // SAFETY: room for 8 rows of 3 contiguous doubles; 3 ints in.
+        check(unsafe {
+            sys::o3d_voxelgrid_get_voxel_bounding_points(out.as_mut_ptr().cast(), self.as_raw(), index.as_ptr())
+        })?;
+        Ok(out)
+    }
+
+    /// Space carving with a 1-channel float32 depth map in metres of the intrinsic's size (Open3D's
+    /// `carve_depth_map`): a voxel stays when a corner inside the image lies on or behind the observed depth,
+    /// or, with `keep_voxels_outside_image`, when a corner falls outside the image. The extrinsic (world to
+    /// camera) must be rigid.
+    pub fn carve_depth_map(
+        &mut self,
+        depth_map: &Image,
+        camera_params: &PinholeCameraParameters,
+        keep_voxels_outside_image: bool,
+    ) -> Result<&mut Self> {
+        let intrinsic = camera_params.intrinsic.to_raw();
+        // SAFETY: valid handles; the struct and 16 doubles live for the call.
+        check(unsafe {
+            sys::o3d_voxelgrid_carve_depth_map(
+                self.raw_mut(),
+                depth_map.as_raw(),
+                &intrinsic,
+                mat4_ptr(&camera_params.extrinsic),
+                i32::from(keep_voxels_outside_image),
+            )
+        })?;
+        Ok(self)
+    }
+
+    /// Space carving with a 1-channel float32 mask of the intrinsic's size (Open3D's `carve_silhouette`): as
+    /// [`VoxelGrid::carve_depth_map`], a voxel staying when a corner inside the image falls on the mask (> 0).
+    pub fn carve_silhouette(
+        &mut self,
+        silhouette_mask: &Image,
+        camera_params: &PinholeCameraParameters,
+        keep_voxels_outside_image: bool,
+    ) -> Result<&mut Self> {
+        let intrinsic = camera_params.intrinsic.to_raw();
+        // SAFETY: valid handles; the struct and 16 doubles live for the call.
+        check(unsafe {
+            sys::o3d_voxelgrid_carve_silhouette(
+                self.raw_mut(),
+                silhouette_mask.as_raw(),
+                &intrinsic,
+                mat4_ptr(&camera_params.extrinsic),
+                i32::from(keep_voxels_outside_image),
+            )
+        })?;
+        Ok(self)
     }
 }
 

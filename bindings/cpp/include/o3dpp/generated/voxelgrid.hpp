@@ -56,6 +56,14 @@ public:
         check(o3d_voxelgrid_get_voxel(out.data(), self().get(), point.data()));
         return out;
     }
+    /// @brief A dense grid of round(width / voxel_size) x round(height / voxel_size) x round(depth / voxel_size) voxels of one color, voxel (0, 0, 0) starting at `origin` (Open3D's VoxelGrid.create_dense).
+    static Self create_dense(const Vec3& origin, const Vec3& color, double voxel_size, double width, double height, double depth) {
+        return Self::adopt([&](auto** out) { return o3d_voxelgrid_create_dense(out, origin.data(), color.data(), voxel_size, width, height, depth); });
+    }
+    /// @brief Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+    static Self create_from_triangle_mesh_within_bounds(const TriangleMesh& mesh, double voxel_size, const Vec3& min_bound, const Vec3& max_bound) {
+        return Self::adopt([&](auto** out) { return o3d_voxelgrid_create_from_triangle_mesh_within_bounds(out, mesh.get(), voxel_size, min_bound.data(), max_bound.data()); });
+    }
 
 private:
     Self& self() { return static_cast<Self&>(*this); }

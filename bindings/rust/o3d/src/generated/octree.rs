@@ -21,4 +21,22 @@ impl Octree {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_octree_num_leaf_nodes(&mut out, self.as_raw()) }).map(|()| out)
     }
+    /// New empty octree of `max_depth` over the cube of edge `size` at `origin` (Open3D's Octree(max_depth, origin, size)).
+    pub fn new_with_bounds(max_depth: usize, origin: [f64; 3], size: f64) -> Result<Octree> {
+        let max_depth = crate::util::to_i32(max_depth, "max_depth")?;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::octree::new_octree(|out| unsafe { sys::o3d_octree_create_with_bounds(out, max_depth, origin.as_ptr(), size) })
+    }
+    /// Insert point number `index` with `color` into the leaf at max depth that holds `point`, creating the nodes on the way (Open3D's insert_point with OctreePointColorLeafNode leaves): the leaf keeps its indices ascending and unique and the mean color of its points. A point outside the root cube changes nothing.
+    pub fn insert_point(&mut self, point: [f64; 3], index: i32, color: [f64; 3]) -> Result<bool> {
+        let mut out = 0;
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_octree_insert_point(&mut out, self.raw_mut(), point.as_ptr(), index, color.as_ptr()) }).map(|()| out != 0)
+    }
+    /// Rebuild the octree from a voxel grid (Open3D's create_from_voxel_grid): the root at the grid's origin (lowered to the lowest index when some are negative) with the edge of the grid's largest extent, one leaf per voxel centre at the octree's max depth holding the voxel's color and its position in the grid's voxel order.
+    pub fn create_from_voxel_grid(&mut self, grid: &VoxelGrid) -> Result<&mut Self> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        check(unsafe { sys::o3d_octree_create_from_voxel_grid(self.raw_mut(), grid.as_raw()) })?;
+        Ok(self)
+    }
 }

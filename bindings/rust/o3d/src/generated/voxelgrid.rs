@@ -42,4 +42,19 @@ impl VoxelGrid {
         // SAFETY: a valid handle; pointers to values that live for the call.
         check(unsafe { sys::o3d_voxelgrid_get_voxel(out.as_mut_ptr(), self.as_raw(), point.as_ptr()) }).map(|()| out)
     }
+    /// A dense grid of round(width / voxel_size) x round(height / voxel_size) x round(depth / voxel_size) voxels of one color, voxel (0, 0, 0) starting at `origin` (Open3D's VoxelGrid.create_dense).
+    pub fn create_dense(origin: [f64; 3], color: [f64; 3], voxel_size: f64, width: f64, height: f64, depth: f64) -> Result<VoxelGrid> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::voxelgrid::new_grid(|out| unsafe { sys::o3d_voxelgrid_create_dense(out, origin.as_ptr(), color.as_ptr(), voxel_size, width, height, depth) })
+    }
+    /// Voxels of the triangles that touch a cell of `[min_bound, max_bound]` (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+    pub fn create_from_triangle_mesh_within_bounds(mesh: &TriangleMesh, voxel_size: f64, min_bound: [f64; 3], max_bound: [f64; 3]) -> Result<VoxelGrid> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::voxelgrid::new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_triangle_mesh_within_bounds(out, mesh.as_raw(), voxel_size, min_bound.as_ptr(), max_bound.as_ptr()) })
+    }
+    /// The voxel grid of an octree's leaves (Open3D's Octree.to_voxel_grid): voxel size = size / 2^max_depth, origin at the octree's origin, one voxel per leaf with the leaf's color.
+    pub fn create_from_octree(octree: &Octree) -> Result<VoxelGrid> {
+        // SAFETY: a valid handle; pointers to values that live for the call.
+        crate::voxelgrid::new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_octree(out, octree.as_raw()) })
+    }
 }

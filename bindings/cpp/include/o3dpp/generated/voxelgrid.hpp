@@ -60,7 +60,7 @@ public:
     static Self create_dense(const Vec3& origin, const Vec3& color, double voxel_size, double width, double height, double depth) {
         return Self::adopt([&](auto** out) { return o3d_voxelgrid_create_dense(out, origin.data(), color.data(), voxel_size, width, height, depth); });
     }
-    /// @brief Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+    /// @brief Voxels of the triangles that touch them (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds), on the grid whose origin is `min_bound`, keeping only cells (i, j, k) with 0 <= index <= floor((max_bound - min_bound) / voxel_size) on each axis (Open3D ignores `max_bound` and may also make cells at negative indices).
     static Self create_from_triangle_mesh_within_bounds(const TriangleMesh& mesh, double voxel_size, const Vec3& min_bound, const Vec3& max_bound) {
         return Self::adopt([&](auto** out) { return o3d_voxelgrid_create_from_triangle_mesh_within_bounds(out, mesh.get(), voxel_size, min_bound.data(), max_bound.data()); });
     }

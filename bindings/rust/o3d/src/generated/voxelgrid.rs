@@ -47,7 +47,7 @@ impl VoxelGrid {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::voxelgrid::new_grid(|out| unsafe { sys::o3d_voxelgrid_create_dense(out, origin.as_ptr(), color.as_ptr(), voxel_size, width, height, depth) })
     }
-    /// Voxels of the triangles that touch a cell of `[min_bound, max_bound]` (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.
+    /// Voxels of the triangles that touch them (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds), on the grid whose origin is `min_bound`, keeping only cells (i, j, k) with 0 <= index <= floor((max_bound - min_bound) / voxel_size) on each axis (Open3D ignores `max_bound` and may also make cells at negative indices).
     pub fn create_from_triangle_mesh_within_bounds(mesh: &TriangleMesh, voxel_size: f64, min_bound: [f64; 3], max_bound: [f64; 3]) -> Result<VoxelGrid> {
         // SAFETY: a valid handle; pointers to values that live for the call.
         crate::voxelgrid::new_grid(|out| unsafe { sys::o3d_voxelgrid_create_from_triangle_mesh_within_bounds(out, mesh.as_raw(), voxel_size, min_bound.as_ptr(), max_bound.as_ptr()) })

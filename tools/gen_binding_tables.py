@@ -473,6 +473,12 @@ PY_METHODS = {
     "o3d_lineset_create_from_triangle_mesh": ("LineSet", None, {}),
     "o3d_octree_convert_from_point_cloud": ("Octree", None, {"pc": "point_cloud", "size_expand": "=0.01"}),
     "o3d_octree_num_leaf_nodes": ("Octree", "_num_leaf_nodes", {}),
+    "o3d_voxelgrid_create_dense": ("VoxelGrid", None, {}),
+    "o3d_voxelgrid_create_from_triangle_mesh_within_bounds": ("VoxelGrid", None, {"mesh": "input"}),
+    "o3d_voxelgrid_create_from_octree": ("VoxelGrid", "_create_from_octree", {}),  # (o3d/geometry.py: both forms)
+    "o3d_octree_create_with_bounds": ("Octree", "__init__", {}),
+    "o3d_octree_insert_point": ("Octree", "_insert_point", {}),  # (o3d/geometry.py: Open3D's leaf functions)
+    "o3d_octree_create_from_voxel_grid": ("Octree", None, {"grid": "voxel_grid"}),
     **{f"o3d_selection_polygon_volume_{c}_{a}": ("SelectionPolygonVolume", f"@{a}", {}) for c in ("get", "set")
        for a in ("axis_min", "axis_max")},
     **{f"o3d_pose_graph_{c}": ("PoseGraph", f"_{c}", {}) for c in (  # (o3d/pipelines/_pose_graph.py shows them)
@@ -504,7 +510,7 @@ PY_CLASSES = {"PointCloud": ("o3d_pointcloud_t", True), "TriangleMesh": ("o3d_tr
               "VisualizerWithEditing": ("o3d_visualizer_t", False, PY_VIS.format(target="self")),
               "ViewControl": ("o3d_visualizer_t", False, PY_VIS.format(target="self.v()"))}
 PY_TYPES = {"o3d_pointcloud_t": "PyPointCloud", "o3d_trianglemesh_t": "PyTriangleMesh", "o3d_image_t": "PyImage",
-            "o3d_voxelgrid_t": "PyVoxelGrid", "o3d_lineset_t": "PyLineSet"}  # the extension's classes
+            "o3d_voxelgrid_t": "PyVoxelGrid", "o3d_lineset_t": "PyLineSet", "o3d_octree_t": "PyOctree"}  # the extension's classes
 # Calls that may reallocate arrays (they first give the geometry a private copy while numpy views share it), and the
 # changing methods that return None in Open3D.
 PY_RESIZING = {"o3d_pointcloud_clear", "o3d_pointcloud_paint_uniform_color", "o3d_pointcloud_remove_non_finite_points",

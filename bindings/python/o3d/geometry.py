@@ -319,6 +319,8 @@ class Voxel:
     """One occupied voxel of a VoxelGrid: grid_index (int32 (3,)) and color (float64 (3,))."""
 
     def __init__(self, grid_index=(0, 0, 0), color=(0.0, 0.0, 0.0)):
+        if isinstance(grid_index, Voxel):  # the copy constructor
+            grid_index, color = grid_index.grid_index, grid_index.color
         self.grid_index = np.array(grid_index, dtype=np.int32).reshape(3)
         self.color = np.array(color, dtype=np.float64).reshape(3)
 
@@ -333,6 +335,26 @@ def _voxel_grid_get_voxels(self):
 
 
 VoxelGrid.get_voxels = _voxel_grid_get_voxels
+
+
+class _CreateFromOctree:
+    """VoxelGrid.create_from_octree: Open3D's form fills a grid in place (``grid.create_from_octree(octree)``,
+    returning None); called on the class (``VoxelGrid.create_from_octree(octree)``) it returns a new grid."""
+
+    def __get__(self, grid, cls=None):
+        if grid is None:
+            def create_from_octree(octree):
+                """A new VoxelGrid of the octree's leaves (as Octree.to_voxel_grid)."""
+                return VoxelGrid._create_from_octree(octree)
+        else:
+            def create_from_octree(octree):
+                """Replace this grid by the voxels of the octree's leaves: voxel_size = size / 2^max_depth, origin
+                at the octree's origin, one voxel per leaf with its color."""
+                grid._assign(VoxelGrid._create_from_octree(octree))
+        return create_from_octree
+
+
+VoxelGrid.create_from_octree = _CreateFromOctree()
 
 
 class OctreeNodeInfo:
@@ -353,15 +375,106 @@ class OctreeLeafNode:
     """Base of the octree leaves (as Open3D's)."""
 
 
+class _PointColorLeafInit:
+    """OctreePointColorLeafNode.get_init_function(): called, an empty OctreePointColorLeafNode."""
+
+    def __call__(self):
+        return OctreePointColorLeafNode()
+
+
+class _PointColorLeafUpdate:
+    """OctreePointColorLeafNode.get_update_function(idx, color): called on a leaf, adds point idx with color (as the
+    octree's leaves do: indices ascending and unique, color the mean of the points')."""
+
+    def __init__(self, idx, color):
+        self.idx = int(idx)
+        self.color = np.array(color, dtype=np.float64).reshape(3)
+
+    def __call__(self, node):
+        if self.idx not in node.indices:
+            n = len(node.indices)
+            node.color = (np.asarray(node.color, dtype=np.float64) * n + self.color) / (n + 1)
+            node.indices = sorted(node.indices + [self.idx])
+
+
 class OctreePointColorLeafNode(OctreeLeafNode):
     """A leaf: indices of its points (list of int, ascending) and their mean color."""
 
     def __init__(self, indices=None, color=(0.0, 0.0, 0.0)):
+        if isinstance(indices, OctreePointColorLeafNode):  # the copy constructor
+            indices, color = indices.indices, indices.color
         self.indices = list(indices) if indices is not None else []
         self.color = np.array(color, dtype=np.float64).reshape(3)
 
     def __repr__(self):
         return f"OctreePointColorLeafNode with color {tuple(self.color)} containing {len(self.indices)} points."
+
+    @staticmethod
+    def get_init_function():
+        """The function making an empty OctreePointColorLeafNode (for Octree.insert_point)."""
+        return _PointColorLeafInit()
+
+    @staticmethod
+    def get_update_function(idx, color):
+        """The function adding point idx with color to a leaf (for Octree.insert_point)."""
+        return _PointColorLeafUpdate(idx, color)
+
+
+class _InternalNodeFunction:
+    """What OctreeInternalNode / OctreeInternalPointNode's get_*_function return: accepted by Octree.insert_point,
+    which keeps o3d's own internal nodes (no per-node point indices)."""
+
+    def __init__(self, cls, idx=None):
+        self.cls, self.idx = cls, idx
+
+    def __call__(self, *node):
+        return None if node else self.cls()
+
+
+class OctreeInternalNode:
+    """An internal octree node (Open3D's); o3d's octree keeps its own (only leaves carry data)."""
+
+    @classmethod
+    def get_init_function(cls):
+        return _InternalNodeFunction(cls)
+
+    @classmethod
+    def get_update_function(cls, idx=None):
+        return _InternalNodeFunction(cls, idx)
+
+
+class OctreeInternalPointNode(OctreeInternalNode):
+    """Open3D's internal node listing its subtree's point indices; o3d's octree does not keep them (accepted by
+    insert_point for Open3D's calls, changing nothing)."""
+
+
+def _octree_insert_point(self, point, f_init, f_update, fi_init=None, fi_update=None):
+    """Insert a point (Open3D's form): ``insert_point(point, OctreePointColorLeafNode.get_init_function(),
+    OctreePointColorLeafNode.get_update_function(index, color)[, OctreeInternal*Node.get_init_function(),
+    OctreeInternal*Node.get_update_function(...)])`` adds point number index with color to the leaf at max depth
+    holding point (its indices ascending and unique, its color their mean); a point outside the root changes
+    nothing. Returns None, as Open3D. o3d keeps only point-colour leaves: other node functions raise
+    UnsupportedError. o3d's own form ``insert_point(point, index, color)`` returns whether the point was inside."""
+    if isinstance(f_update, _PointColorLeafUpdate):
+        if not isinstance(f_init, _PointColorLeafInit):
+            raise _o3d.UnsupportedError("insert_point: f_init must be OctreePointColorLeafNode.get_init_function()")
+        for f in (fi_init, fi_update):
+            if f is not None and not isinstance(f, _InternalNodeFunction):
+                raise _o3d.UnsupportedError("insert_point: fi_init / fi_update must be None or "
+                                            "OctreeInternalNode / OctreeInternalPointNode functions")
+        self._insert_point(point, f_update.idx, f_update.color)
+        return None
+    if isinstance(f_init, (int, np.integer)) and not isinstance(f_init, bool) and fi_init is None and fi_update is None:
+        return self._insert_point(point, f_init, f_update)
+    raise _o3d.UnsupportedError("insert_point: o3d's octree keeps point-colour leaves only: pass "
+                                "OctreePointColorLeafNode.get_init_function() and get_update_function(index, color), "
+                                "or call insert_point(point, index, color)")
+
+
+Octree.insert_point = _octree_insert_point
+Octree.to_voxel_grid = lambda self: VoxelGrid._create_from_octree(self)
+Octree.to_voxel_grid.__doc__ = ("The voxel grid of the leaves: voxel_size = size / 2^max_depth, origin at the octree's "
+                                "origin, one voxel per leaf with the leaf's color.")
 
 
 def _octree_locate_leaf_node(self, point):
@@ -424,4 +537,4 @@ __all__ = ["PointCloud", "TriangleMesh", "TetraMesh", "Image", "RGBDImage", "Sim
            "OrientedBoundingBox", "OrientedBoundingEllipsoid", "HalfEdgeTriangleMesh", "HalfEdge",
            "DeformAsRigidAsPossibleEnergy", "LineSet", "VoxelGrid", "Voxel", "Octree", "OctreeNodeInfo",
            "OctreeLeafNode",
-           "OctreePointColorLeafNode", "keypoint"]
+           "OctreePointColorLeafNode", "OctreeInternalNode", "OctreeInternalPointNode", "keypoint"]

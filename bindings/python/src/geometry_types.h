@@ -115,7 +115,7 @@ struct PyLineSet : Geom<o3d_lineset_t> {
     PyLineSet();
 };
 
-/// o3d.geometry.VoxelGrid (immutable once created: the C API has no mutating call).
+/// o3d.geometry.VoxelGrid. Its arrays are only copied out (no views), so editing calls need no copy-on-write.
 struct PyVoxelGrid {
     VoxelGridPtr h;
     explicit PyVoxelGrid(o3d_voxelgrid_t* raw) : h(std::make_shared<VoxelGridHandle>(raw)) {}

@@ -75,7 +75,18 @@ void define_octree(py::module_& m) {
                 return py::make_tuple(int_list(idx.data(), std::min(n, idx.size())), vec3_to_array(color),
                                       vec3_to_array(info.origin), info.size, info.depth, info.child_index);
             },
-            py::arg("point"), "None, or (indices, color, origin, size, depth, child_index) of the leaf holding point.");
+            py::arg("point"), "None, or (indices, color, origin, size, depth, child_index) of the leaf holding point.")
+        .def_static(
+            "is_point_in_bound",
+            [](py::handle point, py::handle origin, double size) {
+                const auto p = as_vec3(point, "point");
+                const auto o = as_vec3(origin, "origin");
+                int32_t in = 0;
+                check(o3d_octree_is_point_in_bound(&in, p.data(), o.data(), size));
+                return in != 0;
+            },
+            py::arg("point"), py::arg("origin"), py::arg("size"),
+            "Whether point lies in the half-open cube [origin, origin + size)^3.");
     def_octree_methods(cls);
 }
 

@@ -30,6 +30,33 @@ void def_octree_methods(py::class_<Self, Bases...>& cls) {
             return out;
         },
         "Number of non-empty leaves.");
+    cls.def(
+        py::init([](int64_t max_depth, py::handle origin, double size) {
+            const int32_t max_depth_ = int32_of(max_depth, "max_depth");
+            const auto origin_ = as_vec3(origin, "origin");
+            o3d_octree_t* out = nullptr;
+            check(nogil([&] { return o3d_octree_create_with_bounds(&out, max_depth_, origin_.data(), size); }));
+            return Self(out);
+        }),
+        py::arg("max_depth"), py::arg("origin"), py::arg("size"), "New empty octree of `max_depth` over the cube of edge `size` at `origin` (Open3D's Octree(max_depth, origin, size)).");
+    cls.def(
+        "_insert_point",
+        [](Self& self, py::handle point, int64_t index, py::handle color) {
+            const auto point_ = as_vec3(point, "point");
+            const int32_t index_ = int32_of(index, "index");
+            const auto color_ = as_vec3(color, "color");
+            int32_t out = 0;
+            locked_mut(self.h, [&](o3d_octree_t* c_) { return o3d_octree_insert_point(&out, c_, point_.data(), index_, color_.data()); });
+            return out != 0;
+        },
+        py::arg("point"), py::arg("index"), py::arg("color"), "Insert point number `index` with `color` into the leaf at max depth that holds `point`, creating the nodes on the way (Open3D's insert_point with OctreePointColorLeafNode leaves): the leaf keeps its indices ascending and unique and the mean color of its points. A point outside the root cube changes nothing.");
+    cls.def(
+        "create_from_voxel_grid",
+        [](Self& self, const PyVoxelGrid& grid) {
+            const auto grid_ = grid.h;
+            locked_mut(self.h, [&](o3d_octree_t* c_) { std::shared_lock<std::shared_mutex> grid_lock(grid_->mutex); return o3d_octree_create_from_voxel_grid(c_, grid_->p); });
+        },
+        py::arg("voxel_grid"), "Rebuild the octree from a voxel grid (Open3D's create_from_voxel_grid): the root at the grid's origin (lowered to the lowest index when some are negative) with the edge of the grid's largest extent, one leaf per voxel centre at the octree's max depth holding the voxel's color and its position in the grid's voxel order.");
 }
 
 }  // namespace o3dpy

@@ -60,6 +60,36 @@ void def_voxel_grid_methods(py::class_<Self, Bases...>& cls) {
             return vec3_to_array(out.data());
         },
         "Corner of voxel (0,0,0).");
+    cls.def_static(
+        "create_dense",
+        [](py::handle origin, py::handle color, double voxel_size, double width, double height, double depth) {
+            const auto origin_ = as_vec3(origin, "origin");
+            const auto color_ = as_vec3(color, "color");
+            o3d_voxelgrid_t* out = nullptr;
+            check(nogil([&] { return o3d_voxelgrid_create_dense(&out, origin_.data(), color_.data(), voxel_size, width, height, depth); }));
+            return PyVoxelGrid(out);
+        },
+        py::arg("origin"), py::arg("color"), py::arg("voxel_size"), py::arg("width"), py::arg("height"), py::arg("depth"), "A dense grid of round(width / voxel_size) x round(height / voxel_size) x round(depth / voxel_size) voxels of one color, voxel (0, 0, 0) starting at `origin` (Open3D's VoxelGrid.create_dense).");
+    cls.def_static(
+        "create_from_triangle_mesh_within_bounds",
+        [](const PyTriangleMesh& mesh, double voxel_size, py::handle min_bound, py::handle max_bound) {
+            const auto mesh_ = mesh.h;
+            const auto min_bound_ = as_vec3(min_bound, "min_bound");
+            const auto max_bound_ = as_vec3(max_bound, "max_bound");
+            o3d_voxelgrid_t* out = nullptr;
+            check(nogil([&] { std::shared_lock<std::shared_mutex> mesh_lock(mesh_->mutex); return o3d_voxelgrid_create_from_triangle_mesh_within_bounds(&out, mesh_->p, voxel_size, min_bound_.data(), max_bound_.data()); }));
+            return PyVoxelGrid(out);
+        },
+        py::arg("input"), py::arg("voxel_size"), py::arg("min_bound"), py::arg("max_bound"), "Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.");
+    cls.def_static(
+        "_create_from_octree",
+        [](const PyOctree& octree) {
+            const auto octree_ = octree.h;
+            o3d_voxelgrid_t* out = nullptr;
+            check(nogil([&] { std::shared_lock<std::shared_mutex> octree_lock(octree_->mutex); return o3d_voxelgrid_create_from_octree(&out, octree_->p); }));
+            return PyVoxelGrid(out);
+        },
+        py::arg("octree"), "The voxel grid of an octree's leaves (Open3D's Octree.to_voxel_grid): voxel size = size / 2^max_depth, origin at the octree's origin, one voxel per leaf with the leaf's color.");
 }
 
 }  // namespace o3dpy

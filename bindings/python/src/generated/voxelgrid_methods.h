@@ -80,7 +80,7 @@ void def_voxel_grid_methods(py::class_<Self, Bases...>& cls) {
             check(nogil([&] { std::shared_lock<std::shared_mutex> mesh_lock(mesh_->mutex); return o3d_voxelgrid_create_from_triangle_mesh_within_bounds(&out, mesh_->p, voxel_size, min_bound_.data(), max_bound_.data()); }));
             return PyVoxelGrid(out);
         },
-        py::arg("input"), py::arg("voxel_size"), py::arg("min_bound"), py::arg("max_bound"), "Voxels of the triangles that touch a cell of [min_bound, max_bound] (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds); cells outside the bounds are never made.");
+        py::arg("input"), py::arg("voxel_size"), py::arg("min_bound"), py::arg("max_bound"), "Voxels of the triangles that touch them (Open3D's VoxelGrid.create_from_triangle_mesh_within_bounds), on the grid whose origin is `min_bound`, keeping only cells (i, j, k) with 0 <= index <= floor((max_bound - min_bound) / voxel_size) on each axis (Open3D ignores `max_bound` and may also make cells at negative indices).");
     cls.def_static(
         "_create_from_octree",
         [](const PyOctree& octree) {

@@ -4,6 +4,7 @@ fresh process, so that its peak memory is its own.
 
     bench/.venv/bin/python bench/surface_bench.py [--threads 2] [--repeat 3] [--out bench/RESULTS.md]
     bench/.venv/bin/python bench/surface_bench.py --accuracy [--out FILE]
+    bench/.venv/bin/python bench/surface_bench.py --geometry [--out bench/RESULTS.md]   # the second half's rows
 
 Rows (the issue's): screened Poisson at depth 8 and 10 on the shared fragment.pcd (its own normals); ball pivoting
 and the alpha shape on a 50k-point uniform sampling of the shared knot mesh (normals from the mesh; radii 1.5x and
@@ -35,6 +36,10 @@ DATA = os.environ.get("O3D_TEST_DATA", os.path.join(os.path.dirname(os.path.absp
 FRAGMENT = os.path.join(DATA, "open3d", "fragment.pcd")
 KNOT = os.path.join(DATA, "open3d", "knot.ply")
 ROWS = ["poisson_depth8", "poisson_depth10", "ball_pivoting", "alpha_shape", "orient_tangent_plane", "iss"]
+# The geometry algorithms of issue 22's second half (run with --only, or all with --geometry).
+GEOMETRY_ROWS = ["smooth_mls", "smooth_laplacian", "smooth_taubin", "smooth_bilateral", "estimate_point_covariances",
+                 "detect_planar_patches", "minimal_obb", "oriented_bounding_ellipsoid", "voxel_down_sample_and_trace",
+                 "filter_sharpen", "self_intersecting_triangles", "deform_arap", "half_edge_mesh"]
 
 
 def peak_kib():
@@ -89,6 +94,46 @@ def setup(lib, row, shared):
     if row == "iss":
         pcd = lib.io.read_point_cloud(FRAGMENT)
         return lambda: g.keypoint.compute_iss_keypoints(pcd)
+    return setup_geometry(lib, row)
+
+
+def setup_geometry(lib, row):
+    """The second-half rows: fragment.pcd for the point-cloud calls, the knot mesh for the mesh calls, a sphere of
+    resolution 40 (3,122 vertices) for ARAP with its top cap moved and its bottom cap held."""
+    g = lib.geometry
+    if row in GEOMETRY_ROWS[:9]:  # the point-cloud rows
+        pcd = lib.io.read_point_cloud(FRAGMENT)
+        hybrid = g.KDTreeSearchParamHybrid(radius=0.05, max_nn=30)
+        calls = {
+            "smooth_mls": lambda: pcd.smooth_mls(hybrid),
+            "smooth_laplacian": lambda: pcd.smooth_laplacian(iterations=10, lambda_=0.5, knn=20),
+            "smooth_taubin": lambda: pcd.smooth_taubin(iterations=10, lambda_=0.5, mu=-0.53, knn=20),
+            "smooth_bilateral": lambda: pcd.smooth_bilateral(hybrid, 0.05, 0.05),
+            "estimate_point_covariances": lambda: g.PointCloud.estimate_point_covariances(
+                pcd, g.KDTreeSearchParamKNN(30)),
+            "detect_planar_patches": lambda: pcd.detect_planar_patches(),
+            "minimal_obb": lambda: pcd.get_minimal_oriented_bounding_box(),
+            "oriented_bounding_ellipsoid": lambda: pcd.get_oriented_bounding_ellipsoid(),
+            "voxel_down_sample_and_trace": lambda: pcd.voxel_down_sample_and_trace(
+                0.02, pcd.get_min_bound(), pcd.get_max_bound()),
+        }
+        return calls[row]
+    mesh = lib.io.read_triangle_mesh(KNOT)
+    if row == "filter_sharpen":
+        return lambda: mesh.filter_sharpen(number_of_iterations=5, strength=0.1)
+    if row == "self_intersecting_triangles":
+        return lambda: mesh.get_self_intersecting_triangles()
+    if row == "half_edge_mesh":
+        clean = g.TriangleMesh.create_sphere(radius=1.0, resolution=80)
+        return lambda: g.HalfEdgeTriangleMesh.create_from_triangle_mesh(clean)
+    if row == "deform_arap":
+        sphere = g.TriangleMesh.create_sphere(radius=1.0, resolution=40)
+        v = np.asarray(sphere.vertices)
+        top, bottom = np.where(v[:, 2] > 0.9)[0], np.where(v[:, 2] < -0.9)[0]
+        ids = np.concatenate([top, bottom]).astype(np.int32)
+        pos = np.concatenate([v[top] + [0.3, 0.0, 0.2], v[bottom]])
+        return lambda: sphere.deform_as_rigid_as_possible(lib.utility.IntVector(ids), lib.utility.Vector3dVector(pos),
+                                                          max_iter=10)
     raise SystemExit(f"unknown row {row}")
 
 
@@ -100,6 +145,14 @@ def describe(row, value):
         return f"{len(value.triangles)} t"
     if row == "iss":
         return f"{len(value.points)} keypoints"
+    if row == "detect_planar_patches":
+        return f"{len(value)} patches"
+    if row == "voxel_down_sample_and_trace":
+        return f"{len(value[0].points)} points"
+    if row == "self_intersecting_triangles":
+        return f"{len(value)} pairs"
+    if row in ("minimal_obb", "oriented_bounding_ellipsoid"):
+        return f"volume {value.volume():.4g}"
     return ""
 
 
@@ -146,7 +199,9 @@ def bench(args):
     import o3d
     knot = knot_samples(o3d)
     spacing = float(np.mean(np.asarray(knot.compute_nearest_neighbor_distance())))
-    rows = [r for r in ROWS if not args.only or any(s in r for s in args.only)]
+    pool = ROWS + GEOMETRY_ROWS if args.geometry or args.only else ROWS
+    rows = [r for r in pool if (not args.only or any(s in r for s in args.only)) and (not args.geometry or r in
+                                                                                      GEOMETRY_ROWS)]
     results = {}
     with tempfile.TemporaryDirectory() as tmp:
         shared = os.path.join(tmp, "knot.npz")
@@ -163,8 +218,23 @@ def bench(args):
                               f"{3 * spacing:.3g}",
              "alpha_shape": f"create_from_point_cloud_alpha_shape, knot 50k, alpha {4 * spacing:.3g}",
              "orient_tangent_plane": "orient_normals_consistent_tangent_plane(10), fragment.pcd",
-             "iss": "keypoint.compute_iss_keypoints (default radii), fragment.pcd"}
-    lines = ["", "## Surface reconstruction and point-cloud algorithms of issue 22 (`bench/surface_bench.py`)", "",
+             "iss": "keypoint.compute_iss_keypoints (default radii), fragment.pcd",
+             "smooth_mls": "smooth_mls(Hybrid(0.05, 30)), fragment.pcd",
+             "smooth_laplacian": "smooth_laplacian(10, 0.5, knn 20), fragment.pcd",
+             "smooth_taubin": "smooth_taubin(10, 0.5, -0.53, knn 20), fragment.pcd",
+             "smooth_bilateral": "smooth_bilateral(Hybrid(0.05, 30), 0.05, 0.05), fragment.pcd",
+             "estimate_point_covariances": "PointCloud.estimate_point_covariances(KNN 30), fragment.pcd",
+             "detect_planar_patches": "detect_planar_patches() (defaults), fragment.pcd",
+             "minimal_obb": "get_minimal_oriented_bounding_box(), fragment.pcd",
+             "oriented_bounding_ellipsoid": "get_oriented_bounding_ellipsoid(), fragment.pcd",
+             "voxel_down_sample_and_trace": "voxel_down_sample_and_trace(0.02, bounds), fragment.pcd",
+             "filter_sharpen": "filter_sharpen(5, 0.1), knot",
+             "self_intersecting_triangles": "get_self_intersecting_triangles(), knot",
+             "deform_arap": "deform_as_rigid_as_possible(caps, 10 iterations), sphere 3,122 v",
+             "half_edge_mesh": "HalfEdgeTriangleMesh.create_from_triangle_mesh, sphere 12,642 v"}
+    title = ("Geometry algorithms of issue 22, second half" if args.geometry else
+             "Surface reconstruction and point-cloud algorithms of issue 22")
+    lines = ["", f"## {title} (`bench/surface_bench.py{' --geometry' if args.geometry else ''}`)", "",
              f"- Date: {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; machine: {platform.machine()}, "
              f"{os.cpu_count()} logical CPUs, {args.threads} threads; o3d {versions['o3d']}, open3d {versions['open3d']}",
              f"- Median of {args.repeat} runs after a warm-up, each library in its own process. Ratio = Open3D time / "
@@ -287,6 +357,7 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--only", nargs="*")
+    ap.add_argument("--geometry", action="store_true", help="the rows of the second half (smoothing, bounding volumes, ...)")
     ap.add_argument("--accuracy", action="store_true", help="the accuracy table instead of the timings")
     ap.add_argument("--out", default=None, help="append the Markdown table to this file")
     ap.add_argument("--library", help=argparse.SUPPRESS)  # a child process

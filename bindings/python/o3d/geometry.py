@@ -102,9 +102,34 @@ def _utility():
     return utility
 
 
-class OrientedBoundingBox:
+class _OrientedSolid:
+    """The rigid motions and scaling shared by OrientedBoundingBox and OrientedBoundingEllipsoid: a centre, a
+    rotation R and per-axis sizes (the attribute named by _SIZES: extent or radii)."""
+    _SIZES = None
+
+    def translate(self, translation, relative=True):
+        t = np.asarray(translation, dtype=np.float64).reshape(3)
+        self.center = self.center + t if relative else t.copy()
+        return self
+
+    def rotate(self, R, center=None):
+        R = np.asarray(R, dtype=np.float64).reshape(3, 3)
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        self.center = R @ (self.center - c) + c
+        self.R = R @ self.R
+        return self
+
+    def scale(self, scale, center=None):
+        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
+        setattr(self, self._SIZES, getattr(self, self._SIZES) * scale)
+        self.center = scale * (self.center - c) + c
+        return self
+
+
+class OrientedBoundingBox(_OrientedSolid):
     """Box of edge lengths ``extent`` along the columns of the rotation ``R``, centred at ``center`` (as
     Open3D's). A value: computed by the library, stored here as numpy arrays."""
+    _SIZES = "extent"
 
     def __init__(self, center=None, R=None, extent=None):
         if isinstance(center, OrientedBoundingBox):
@@ -174,31 +199,15 @@ class OrientedBoundingBox:
     def get_oriented_bounding_box(self, robust=False):
         return OrientedBoundingBox(self)
 
-    def translate(self, translation, relative=True):
-        t = np.asarray(translation, dtype=np.float64).reshape(3)
-        self.center = self.center + t if relative else t.copy()
-        return self
-
-    def rotate(self, R, center=None):
-        R = np.asarray(R, dtype=np.float64).reshape(3, 3)
-        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
-        self.center = R @ (self.center - c) + c
-        self.R = R @ self.R
-        return self
-
-    def scale(self, scale, center=None):
-        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
-        self.extent = self.extent * scale
-        self.center = scale * (self.center - c) + c
-        return self
 
     def __repr__(self):
         return f"OrientedBoundingBox: center: {tuple(self.center)}, extent: {tuple(self.extent)}"
 
 
-class OrientedBoundingEllipsoid:
+class OrientedBoundingEllipsoid(_OrientedSolid):
     """The solid {center + R diag(radii) u : |u| <= 1}: semi-axes of lengths ``radii`` along the columns of the
     rotation ``R`` (as Open3D's). A value: computed by the library, stored here as numpy arrays."""
+    _SIZES = "radii"
 
     def __init__(self, center=None, R=None, radii=None):
         if isinstance(center, OrientedBoundingEllipsoid):
@@ -247,23 +256,6 @@ class OrientedBoundingEllipsoid:
         """The box of edges 2 * radii along R's columns (the ellipsoid's tight oriented box)."""
         return OrientedBoundingBox(self.center, self.R, 2.0 * self.radii)
 
-    def translate(self, translation, relative=True):
-        t = np.asarray(translation, dtype=np.float64).reshape(3)
-        self.center = self.center + t if relative else t.copy()
-        return self
-
-    def rotate(self, R, center=None):
-        R = np.asarray(R, dtype=np.float64).reshape(3, 3)
-        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
-        self.center = R @ (self.center - c) + c
-        self.R = R @ self.R
-        return self
-
-    def scale(self, scale, center=None):
-        c = self.center if center is None else np.asarray(center, dtype=np.float64).reshape(3)
-        self.radii = self.radii * scale
-        self.center = scale * (self.center - c) + c
-        return self
 
     def __repr__(self):
         return f"OrientedBoundingEllipsoid: center: {tuple(self.center)}, radii: {tuple(self.radii)}"

@@ -107,6 +107,22 @@ class _OrientedSolid:
     rotation R and per-axis sizes (the attribute named by _SIZES: extent or radii)."""
     _SIZES = None
 
+    def _assign(self, center, R, sizes, default_color):
+        """Open3D's constructors: a copy of another solid of the same class, (center, R, sizes), or nothing."""
+        if isinstance(center, type(self)):
+            other = center
+            center, R, sizes = other.center, other.R, getattr(other, self._SIZES)
+            self.color = np.array(other.color, dtype=np.float64)
+        else:
+            self.color = default_color
+        if center is None and R is None and sizes is None:
+            center, R, sizes = np.zeros(3), np.eye(3), np.zeros(3)
+        elif center is None or R is None or sizes is None:
+            raise TypeError(f"{type(self).__name__}: give center, R and {self._SIZES} (or nothing)")
+        self.center = np.array(center, dtype=np.float64).reshape(3)
+        self.R = np.array(R, dtype=np.float64).reshape(3, 3)
+        setattr(self, self._SIZES, np.array(sizes, dtype=np.float64).reshape(3))
+
     def translate(self, translation, relative=True):
         t = np.asarray(translation, dtype=np.float64).reshape(3)
         self.center = self.center + t if relative else t.copy()
@@ -132,19 +148,7 @@ class OrientedBoundingBox(_OrientedSolid):
     _SIZES = "extent"
 
     def __init__(self, center=None, R=None, extent=None):
-        if isinstance(center, OrientedBoundingBox):
-            other = center
-            center, R, extent = other.center, other.R, other.extent
-            self.color = np.array(other.color, dtype=np.float64)
-        else:
-            self.color = np.zeros(3)
-        if center is None and R is None and extent is None:
-            center, R, extent = np.zeros(3), np.eye(3), np.zeros(3)
-        elif center is None or R is None or extent is None:
-            raise TypeError("OrientedBoundingBox: give center, R and extent (or nothing)")
-        self.center = np.array(center, dtype=np.float64).reshape(3)
-        self.R = np.array(R, dtype=np.float64).reshape(3, 3)
-        self.extent = np.array(extent, dtype=np.float64).reshape(3)
+        self._assign(center, R, extent, default_color=np.zeros(3))
 
     @staticmethod
     def create_from_points(points, robust=False):
@@ -210,19 +214,7 @@ class OrientedBoundingEllipsoid(_OrientedSolid):
     _SIZES = "radii"
 
     def __init__(self, center=None, R=None, radii=None):
-        if isinstance(center, OrientedBoundingEllipsoid):
-            other = center
-            center, R, radii = other.center, other.R, other.radii
-            self.color = np.array(other.color, dtype=np.float64)
-        else:
-            self.color = np.ones(3)
-        if center is None and R is None and radii is None:
-            center, R, radii = np.zeros(3), np.eye(3), np.zeros(3)
-        elif center is None or R is None or radii is None:
-            raise TypeError("OrientedBoundingEllipsoid: give center, R and radii (or nothing)")
-        self.center = np.array(center, dtype=np.float64).reshape(3)
-        self.R = np.array(R, dtype=np.float64).reshape(3, 3)
-        self.radii = np.array(radii, dtype=np.float64).reshape(3)
+        self._assign(center, R, radii, default_color=np.ones(3))
 
     @staticmethod
     def create_from_points(points, robust=False):

@@ -16,32 +16,20 @@
 #include "o3d/geometry/triangle_mesh_ops.h"
 #include "o3d/io/triangle_mesh_io.h"
 #include "o3d/utility/error.h"
+#include "o3d/utility/random.h"
 #include "test_data.h"
 
 using namespace o3d::geometry;
 
 namespace {
 
-/// splitmix64, repeated in tools/reference/record_ball_pivoting.py so Open3D sees the same clouds.
-class SplitMix64 {
-public:
-    explicit SplitMix64(uint64_t seed) : state_(seed) {}
-    double uniform() {
-        state_ += 0x9E3779B97F4A7C15ULL;
-        uint64_t z = state_;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        z ^= z >> 31;
-        return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-    }
-
-private:
-    uint64_t state_;
-};
+/// o3d::utility::random::SplitMix64 (uniform: 53 bits in [0, 1)), repeated in
+/// tools/reference/record_ball_pivoting.py so Open3D sees the same clouds.
+using o3d::utility::random::SplitMix64;
 
 /// Uniform points on a sphere about the origin, with their exact outward normals.
 PointCloud sphere_cloud(size_t n, double radius, uint64_t seed) {
-    SplitMix64 rng(seed);
+    SplitMix64 rng{seed};
     PointCloud cloud;
     for (size_t i = 0; i < n; ++i) {
         const double z = 2.0 * rng.uniform() - 1.0;
@@ -57,7 +45,7 @@ PointCloud sphere_cloud(size_t n, double radius, uint64_t seed) {
 /// Area-uniform points on a torus about the z axis (tube angle accepted with probability
 /// (R + r cos t) / (R + r)), with exact outward normals.
 PointCloud torus_cloud(size_t n, double major, double minor, uint64_t seed) {
-    SplitMix64 rng(seed);
+    SplitMix64 rng{seed};
     PointCloud cloud;
     while (cloud.points.size() < n) {
         const double t = 2.0 * M_PI * rng.uniform();
@@ -254,7 +242,7 @@ TEST(BallPivoting, CoincidentPointsAreUsedOnce) {
     EXPECT_GT(area(mesh), 0.97 * 4.0 * M_PI);
 
     // Copies a rounding error apart count as the same point too (else each copy takes part of the fan).
-    SplitMix64 rng(9);
+    SplitMix64 rng{9};
     for (size_t i = n; i < 2 * n; ++i)
         cloud.points[i] += 1e-12 * Eigen::Vector3d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
     mesh = create_from_point_cloud_ball_pivoting(cloud, {r, 2.0 * r});

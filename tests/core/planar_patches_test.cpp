@@ -14,29 +14,19 @@
 #include "o3d/geometry/oriented_bounding_box.h"
 #include "o3d/geometry/planar_patches.h"
 #include "o3d/utility/error.h"
+#include "o3d/utility/random.h"
 
 using namespace o3d::geometry;
 using o3d::kdtree::SearchParam;
 
 namespace {
 
-/// splitmix64, repeated in tools/reference/record_planar_patches.py so Open3D sees the same clouds.
-class SplitMix64 {
-public:
-    explicit SplitMix64(uint64_t seed) : state_(seed) {}
-    double uniform() {
-        state_ += 0x9E3779B97F4A7C15ULL;
-        uint64_t z = state_;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        z ^= z >> 31;
-        return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-    }
-    double sym(double a) { return a * (2.0 * uniform() - 1.0); }
+/// o3d::utility::random::SplitMix64 (uniform: 53 bits in [0, 1)), repeated in
+/// tools/reference/record_planar_patches.py so Open3D sees the same clouds.
+using o3d::utility::random::SplitMix64;
 
-private:
-    uint64_t state_;
-};
+/// Uniform in [-a, a].
+double sym(SplitMix64& rng, double a) { return a * (2.0 * rng.uniform() - 1.0); }
 
 /// Points c + a u + b v + e n with a, b, e uniform in [-hu, hu], [-hv, hv], [-noise, noise]; normals n, each
 /// component perturbed by up to normal_noise and renormalised when normal_noise > 0.
@@ -44,11 +34,11 @@ void add_rectangle(SplitMix64& rng, PointCloud& cloud, const Eigen::Vector3d& c,
                    const Eigen::Vector3d& v, double hu, double hv, const Eigen::Vector3d& n, int count, double noise,
                    double normal_noise = 0.0) {
     for (int k = 0; k < count; ++k) {
-        const double a = rng.sym(hu), b = rng.sym(hv), e = rng.sym(noise);
+        const double a = sym(rng, hu), b = sym(rng, hv), e = sym(rng, noise);
         cloud.points.push_back(c + a * u + b * v + e * n);
         Eigen::Vector3d m = n;
         if (normal_noise > 0.0) {
-            const double x = rng.sym(normal_noise), y = rng.sym(normal_noise), z = rng.sym(normal_noise);
+            const double x = sym(rng, normal_noise), y = sym(rng, normal_noise), z = sym(rng, normal_noise);
             m = (n + Eigen::Vector3d(x, y, z)).normalized();
         }
         cloud.normals.push_back(m);
@@ -70,7 +60,7 @@ Eigen::Matrix3d box_rotation() { return rotation_zyx(0.3, -0.2, 0.5); }
 /// Six faces of a box with half sizes kBoxHalf (1500 points per unit of half-size product), noise +-0.004
 /// along the normal, exact outward normals, then rotated by box_rotation() and shifted by kBoxShift.
 PointCloud box_scene() {
-    SplitMix64 rng(11);
+    SplitMix64 rng{11};
     PointCloud cloud;
     for (int axis = 0; axis < 3; ++axis) {
         for (double sign : {-1.0, 1.0}) {
@@ -90,7 +80,7 @@ PointCloud box_scene() {
 /// Floor z = 0 over [-1, 1]^2 (3000 points), wall x = -1 over y in [-1, 1], z in [0, 1.5] (2250), both with
 /// noise +-0.003, and a sphere of radius 0.35 about (0.3, 0.2, 0.6) (2500, exact).
 PointCloud planes_and_sphere_scene() {
-    SplitMix64 rng(22);
+    SplitMix64 rng{22};
     PointCloud cloud;
     add_rectangle(rng, cloud, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 1.0,
                   Eigen::Vector3d::UnitZ(), 3000, 0.003);
@@ -112,7 +102,7 @@ Eigen::Vector3d tilted_normal() { return Eigen::Vector3d(1.0, 2.0, 3.0).normaliz
 /// A 2 x 1.2 rectangle about (0.5, -1, 2) on the plane of normal tilted_normal(), noise +-0.01 along the normal,
 /// normals perturbed by up to 0.05 per component.
 PointCloud noisy_plane_scene() {
-    SplitMix64 rng(33);
+    SplitMix64 rng{33};
     PointCloud cloud;
     const Eigen::Vector3d n = tilted_normal();
     const Eigen::Vector3d u = n.cross(Eigen::Vector3d::UnitZ()).normalized();
@@ -258,7 +248,7 @@ TEST(PlanarPatches, NoisyPlaneGivesOnePatch) {
 
 // Deliberate difference: Open3D 0.20 finds nothing in a noise-free plane (zero-spread statistics).
 TEST(PlanarPatches, NoiseFreePlaneGivesOnePatch) {
-    SplitMix64 rng(44);
+    SplitMix64 rng{44};
     PointCloud cloud;
     add_rectangle(rng, cloud, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 1.0, 0.5,
                   -Eigen::Vector3d::UnitZ(), 2000, 0.0);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "o3d/utility/error.h"
+#include "o3d/utility/random.h"
 
 using namespace o3d::geometry;
 using o3d::InvalidArgument;
@@ -20,19 +21,9 @@ using o3d::kdtree::SearchParam;
 
 namespace {
 
-/// splitmix64, uniform in [0, 1) with 53 bits: the same generator as
+/// o3d::utility::random::SplitMix64 (uniform: 53 bits in [0, 1)): the same generator as
 /// tools/reference/record_point_cloud_smoothing.py, so both sides smooth bit-identical clouds.
-struct SplitMix64 {
-    uint64_t state;
-    double uniform() {
-        state += 0x9E3779B97F4A7C15ull;
-        uint64_t z = state;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return static_cast<double>(z >> 11) * 0x1.0p-53;
-    }
-};
+using o3d::utility::random::SplitMix64;
 
 /// z = 0.1 x + 0.05 y + uniform noise of amplitude 0.01 (the recording script's noisy_plane).
 PointCloud noisy_plane(size_t n, uint64_t seed) {
